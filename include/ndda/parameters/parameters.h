@@ -1,0 +1,350 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_parameters_parameters_h
+#define ndda_parameters_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <ndda/geometry/block_mesh.h>
+
+#include <string>
+#include <vector>
+
+namespace ndda
+{
+  using namespace dealii;
+
+  /**
+   * The parameters of a scene, one struct per `.prm` subsection, each with
+   * static `declare_parameters` and a `parse_parameters` that checks every
+   * value and names the entry in its error message.
+   *
+   * Lists of named objects (blocks, materials, loads, boundary conditions,
+   * bolts) are declared by a name list entry, e.g.
+   * `set Blocks = bar, plate` in `subsection Geometry`, followed by one
+   * subsection per name. The file is therefore read twice: once for the
+   * name lists only, and once strictly with everything declared (see
+   * Parameters::read()).
+   *
+   * @ingroup parameters
+   */
+  namespace parameters
+  {
+    /**
+     * Analysis type. Thesis 3.7: DDA statics keep the inertia terms but
+     * zero the velocity at the start of every step; dynamics carry it over.
+     * quasi-static drops inertia altogether and solves equilibrium
+     * K d = f in every step (every block must then be constrained).
+     */
+    enum class AnalysisType
+    {
+      static_analysis,
+      dynamic_analysis,
+      quasi_static
+    };
+
+    /** Time integrators, see doc/theory.md. */
+    enum class TimeIntegrator
+    {
+      /// Shi's DDA scheme: d = v0 dt + a dt^2 / 2, v1 = 2 d / dt - v0.
+      dda,
+      /// Newmark average acceleration (beta = 1/4, gamma = 1/2).
+      newmark
+    };
+
+    enum class LinearSolver
+    {
+      umfpack,
+      klu,
+      cg_amg
+    };
+
+    enum class ConstraintMethod
+    {
+      exact,
+      penalty
+    };
+
+    /** subsection Control */
+    struct Control
+    {
+      AnalysisType     analysis_type;
+      TimeIntegrator   time_integrator;
+      double           time_step;
+      double           end_time;
+      double           max_displacement_ratio;
+      unsigned int     max_step_cuts;
+      unsigned int     element_degree;
+      LinearSolver     linear_solver;
+      double           solver_tolerance;
+      ConstraintMethod constraint_method;
+      double           penalty_factor;
+      double           matrix_update_tolerance;
+      bool             rotate_with_spin;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /** One material of subsection Materials. */
+    struct Material
+    {
+      std::string name;
+      double      density;
+      double      youngs_modulus;
+      double      poissons_ratio;
+      double      friction_angle;
+      double      cohesion;
+      double      tensile_strength;
+      double      viscosity;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &name);
+    };
+
+    /** Strength of joints and cracks (used by contact and fracture). */
+    struct JointMaterial
+    {
+      double friction_angle;
+      double cohesion;
+      double tensile_strength;
+    };
+
+    /** subsection Materials */
+    struct Materials
+    {
+      bool                  plane_strain;
+      double                thickness;
+      std::vector<Material> materials;
+      JointMaterial         joint;
+
+      /** Index of the material called @p name; throws naming @p entry. */
+      unsigned int
+      id(const std::string &name, const std::string &entry) const;
+
+      static void
+      declare_parameters(ParameterHandler               &prm,
+                         const std::vector<std::string> &names);
+      void
+      parse_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &names);
+    };
+
+    /** Per-block initial state, given beside the block's geometry. */
+    struct InitialState
+    {
+      /// sigma_xx, sigma_yy, sigma_xy (Pa, tension positive).
+      std::array<double, 3> stress = {{0., 0., 0.}};
+      /// Velocity components as functions of x, y (muparser).
+      std::string velocity = "0; 0";
+    };
+
+    /** subsection Geometry */
+    struct Geometry
+    {
+      std::vector<geometry::BlockDescription>  blocks;
+      std::vector<geometry::RegionDescription> regions;
+      /// Initial state, one per block, then one per region.
+      std::vector<InitialState> block_states;
+      std::vector<InitialState> region_states;
+      std::string               mesh_file;
+      /// For a mesh file: the material name of each physical surface tag
+      /// ("tag: material, ..."), empty means material id = tag.
+      std::vector<std::pair<unsigned int, std::string>> mesh_file_materials;
+      double                                            min_angle;
+
+      static void
+      declare_parameters(ParameterHandler               &prm,
+                         const std::vector<std::string> &block_names,
+                         const std::vector<std::string> &region_names);
+      void
+      parse_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &block_names,
+                       const std::vector<std::string> &region_names,
+                       const Materials                &materials,
+                       const std::string              &base_directory);
+    };
+
+    /** A point load, thesis 3.5.1. */
+    struct PointLoad
+    {
+      std::string name;
+      Point<2>    point;
+      /// "fx(t); fy(t)" in N (per unit thickness times thickness: force).
+      std::string force;
+    };
+
+    /** A load on a boundary segment, thesis 3.5.2. */
+    struct LineLoad
+    {
+      std::string       name;
+      geometry::Segment segment;
+      /// Pressure (scalar, Pa, pushing into the block) or traction (Pa).
+      bool        is_pressure;
+      std::string value;
+    };
+
+    /** subsection Loads */
+    struct Loads
+    {
+      /// Gravity as "gx(t); gy(t)" (m/s^2).
+      std::string            gravity;
+      std::vector<PointLoad> point_loads;
+      std::vector<LineLoad>  line_loads;
+
+      static void
+      declare_parameters(ParameterHandler               &prm,
+                         const std::vector<std::string> &point_names,
+                         const std::vector<std::string> &line_names);
+      void
+      parse_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &point_names,
+                       const std::vector<std::string> &line_names);
+    };
+
+    /** Kinds of displacement constraints, thesis 3.9. */
+    enum class ConstraintType
+    {
+      fixed,
+      roller,
+      displacement,
+      velocity
+    };
+
+    /** One entry of subsection Boundary conditions. */
+    struct BoundaryCondition
+    {
+      std::string                    name;
+      ConstraintType                 type;
+      std::vector<Point<2>>          points;
+      std::vector<geometry::Segment> segments;
+      /// Direction along which a roller may move (degrees from the x axis).
+      double roller_angle;
+      /// Histories: "ux(t); uy(t)" (displacement), "vx(t); vy(t)" (velocity),
+      /// "d(t)" (roller: displacement along the constrained normal).
+      std::string value;
+    };
+
+    /** subsection Boundary conditions */
+    struct BoundaryConditions
+    {
+      std::vector<BoundaryCondition> conditions;
+
+      static void
+      declare_parameters(ParameterHandler               &prm,
+                         const std::vector<std::string> &names);
+      void
+      parse_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &names);
+    };
+
+    /** A bolt between two points, thesis 3.6. */
+    struct Bolt
+    {
+      std::string name;
+      Point<2>    first;
+      Point<2>    second;
+      double      stiffness;
+      double      pretension;
+    };
+
+    /** subsection Bolts */
+    struct Bolts
+    {
+      std::vector<Bolt> bolts;
+
+      static void
+      declare_parameters(ParameterHandler               &prm,
+                         const std::vector<std::string> &names);
+      void
+      parse_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &names);
+    };
+
+    /** subsection Output */
+    struct Output
+    {
+      std::string           directory;
+      double                interval;
+      bool                  write_vtu;
+      bool                  write_hdf5;
+      std::vector<Point<2>> measure_points;
+      double                progress_interval;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &scene_name);
+    };
+
+    /**
+     * All parameters of a scene.
+     */
+    struct Parameters
+    {
+      std::string        scene_name;
+      Control            control;
+      Materials          materials;
+      Geometry           geometry;
+      Loads              loads;
+      BoundaryConditions boundary_conditions;
+      Bolts              bolts;
+      Output             output;
+
+      /** The name lists that decide which subsections exist. */
+      struct NameLists
+      {
+        std::vector<std::string> blocks, regions, materials, point_loads,
+          line_loads, boundary_conditions, bolts;
+      };
+
+      /** Declare everything for the given name lists. */
+      static void
+      declare_parameters(ParameterHandler &prm, const NameLists &names);
+
+      /**
+       * Read a scene from @p input (the text of a `.prm` file) named
+       * @p filename (for messages and relative paths): first the name lists,
+       * then everything, strictly. @p prm ends up holding all entries, as
+       * used, for printing. Throws ExcMessage on every error.
+       */
+      void
+      read(const std::string &input,
+           const std::string &filename,
+           ParameterHandler  &prm);
+
+      /** Read a scene from a file. */
+      void
+      read_file(const std::string &filename, ParameterHandler &prm);
+    };
+
+    /**
+     * Parse "x, y; x, y; ..." into points. @p entry names the entry in the
+     * error message.
+     */
+    std::vector<Point<2>>
+    parse_points(const std::string &text, const std::string &entry);
+
+    /** Parse "x1, y1, x2, y2; ..." into segments. */
+    std::vector<geometry::Segment>
+    parse_segments(const std::string &text, const std::string &entry);
+
+    /**
+     * Check that @p expression is a valid muparser expression with
+     * @p n_components components separated by ';' in the given variables;
+     * throws naming @p entry otherwise.
+     */
+    void
+    check_function(const std::string &expression,
+                   const unsigned int n_components,
+                   const std::string &variables,
+                   const std::string &entry);
+  } // namespace parameters
+} // namespace ndda
+
+#endif

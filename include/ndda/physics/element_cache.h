@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_physics_element_cache_h
+#define ndda_physics_element_cache_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <ndda/parameters/parameters.h>
+
+#include <vector>
+
+namespace ndda
+{
+  using namespace dealii;
+
+  /**
+   * Isotropic linear elasticity tensor for plane stress or plane strain
+   * (thesis eqs. 3.20, 3.21):
+   * sigma = lambda tr(eps) I + 2 mu eps, with lambda = E nu / (1 - nu^2)
+   * for plane stress and E nu / ((1 + nu)(1 - 2 nu)) for plane strain.
+   */
+  template <int dim>
+  SymmetricTensor<4, dim>
+  elasticity_tensor(const double youngs_modulus,
+                    const double poissons_ratio,
+                    const bool   plane_strain);
+
+  /**
+   * Element matrices and operators of every cell, computed on the geometry
+   * of the moment they were built and kept until the cell has moved too
+   * much (DESIGN.md decision 4). For each cell:
+   *
+   * - stiffness: t * int B^T C B (thesis 3.24),
+   * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
+   *   time-step factor),
+   * - at every quadrature point, the strain and the spin of each shape
+   *   function and t * JxW, so that stress updates, internal forces and
+   *   local rotations need no FEValues in the time loop.
+   *
+   * @ingroup physics
+   */
+  template <int dim>
+  class ElementCache
+  {
+  public:
+    struct CellData
+    {
+      FullMatrix<double> stiffness;
+      FullMatrix<double> mass;
+      /// Viscosity over density: the damping matrix is this times mass.
+      double viscosity_over_density = 0;
+      /// strain[q * n_dofs + i]: symmetric gradient of shape function i.
+      std::vector<SymmetricTensor<2, dim>> strain;
+      /// spin[q * n_dofs + i]: (d phi_y / dx - d phi_x / dy) / 2.
+      std::vector<double> spin;
+      /// thickness * JxW at each quadrature point.
+      std::vector<double> weight;
+      /// Vertex positions when the data were computed.
+      std::vector<Point<dim>> vertices;
+      double                  diameter = 0;
+    };
+
+    /**
+     * (Re)compute the data of all cells, or with @p only_moved_cells only of
+     * those whose vertices moved by more than @p tolerance times the cell
+     * diameter since their last computation. Returns the number of cells
+     * computed.
+     */
+    unsigned int
+    update(const DoFHandler<dim>        &dof_handler,
+           const Mapping<dim>           &mapping,
+           const Quadrature<dim>        &quadrature,
+           const parameters::Materials  &materials,
+           const bool                    only_moved_cells,
+           const double                  tolerance);
+
+    const CellData &
+    operator[](const unsigned int cell) const
+    {
+      return data[cell];
+    }
+
+    /** Elasticity tensor of every material, by material id. */
+    const std::vector<SymmetricTensor<4, dim>> &
+    get_elasticity() const
+    {
+      return elasticity;
+    }
+
+    unsigned int
+    n_quadrature_points() const
+    {
+      return n_q_points;
+    }
+
+  private:
+    std::vector<CellData>                 data;
+    std::vector<SymmetricTensor<4, dim>>  elasticity;
+    unsigned int                          n_q_points = 0;
+  };
+} // namespace ndda
+
+#endif

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# ndda: build and run.
+#
+#   ./ndda.sh                  install what is missing, build, run prm/default.prm
+#   ./ndda.sh path/scene.prm   the same, running the given scene
+#   ./ndda.sh test             install, build, and run the whole test suite (ctest)
+#   ./ndda.sh build            install and build only
+#
+# Environment: NDDA_BUILD_DIR (default: build), NDDA_JOBS (default: number of
+# cores), NDDA_BUILD_TYPE (default: Release).
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+build_dir="${NDDA_BUILD_DIR:-$here/build}"
+jobs="${NDDA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+build_type="${NDDA_BUILD_TYPE:-Release}"
+
+# Debian packages ndda needs to build and test.
+packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff)
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "ndda.sh: installing missing Debian packages: ${missing[*]}"
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then
+      sudo="sudo"
+    else
+      echo "ndda.sh: not root and no sudo; please install: ${missing[*]}" >&2
+      exit 1
+    fi
+  fi
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  install_missing
+  if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+    echo "ndda.sh: configuring a $build_type build in $build_dir"
+    cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
+  fi
+  echo "ndda.sh: building with $jobs jobs"
+  cmake --build "$build_dir" -- -j"$jobs"
+}
+
+case "${1:-}" in
+  test)
+    build
+    cd "$build_dir"
+    ctest --output-on-failure -j"$jobs" "${@:2}"
+    ;;
+  build)
+    build
+    ;;
+  -h|--help)
+    sed -n '2,12p' "$0"
+    ;;
+  *)
+    scene="${1:-$here/prm/default.prm}"
+    if [ ! -f "$scene" ]; then
+      echo "ndda.sh: no such scene file: $scene" >&2
+      exit 1
+    fi
+    scene="$(cd "$(dirname "$scene")" && pwd)/$(basename "$scene")"
+    build
+    "$build_dir/ndda" "$scene"
+    ;;
+esac

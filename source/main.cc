@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The ndda program: runs one scene described by a .prm file.
+
+#include <deal.II/base/mpi.h>
+
+#include <ndda/parameters/parameters.h>
+#include <ndda/simulator.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+  void
+  print_help(std::ostream &out)
+  {
+    out << "ndda: nodal-based discontinuous deformation analysis on deal.II\n"
+        << "\n"
+        << "Usage:\n"
+        << "  ndda scene.prm               run the scene\n"
+        << "  ndda --validate scene.prm    check the scene (parameters, "
+           "geometry,\n"
+        << "                               mesh, points) and exit; writes "
+           "nothing\n"
+        << "  ndda --print-parameters      print every parameter with its "
+           "documentation\n"
+        << "  ndda --help                  this text\n"
+        << "\n"
+        << "Output goes to output/<scene name>/ unless Output/Directory "
+           "says otherwise.\n";
+  }
+
+  void
+  print_parameters(std::ostream &out)
+  {
+    // Declare with one example name in every name list, so that every kind
+    // of subsection is documented.
+    dealii::ParameterHandler                 prm;
+    ndda::parameters::Parameters::NameLists names;
+    names.blocks              = {"<block name>"};
+    names.regions             = {"<region name>"};
+    names.materials           = {"<material name>"};
+    names.point_loads         = {"<point load name>"};
+    names.line_loads          = {"<line load name>"};
+    names.boundary_conditions = {"<constraint name>"};
+    names.bolts               = {"<bolt name>"};
+    ndda::parameters::Parameters::declare_parameters(prm, names);
+    prm.print_parameters(out, dealii::ParameterHandler::PRM);
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  try
+    {
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+      const std::vector<std::string> args(argv + 1, argv + argc);
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          print_help(std::cout);
+          return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "--print-parameters")
+        {
+          print_parameters(std::cout);
+          return 0;
+        }
+      if (args[0] == "--validate")
+        {
+          if (args.size() != 2)
+            {
+              std::cerr << "ndda --validate needs one .prm file.\n";
+              return 1;
+            }
+          ndda::Simulator<2> simulator(args[1]);
+          simulator.setup();
+          std::cout << "ndda: '" << args[1] << "' is valid: "
+                    << simulator.get_mesh().n_blocks() << " blocks, "
+                    << simulator.get_mesh().get_triangulation().n_active_cells()
+                    << " cells, " << simulator.get_dof_handler().n_dofs()
+                    << " degrees of freedom.\n";
+          return 0;
+        }
+      if (args.size() != 1 || args[0].rfind("--", 0) == 0)
+        {
+          std::cerr << "ndda: unknown arguments. ";
+          print_help(std::cerr);
+          return 1;
+        }
+      ndda::Simulator<2> simulator(args[0]);
+      simulator.run();
+    }
+  catch (const dealii::ExceptionBase &exc)
+    {
+      // ExcMessage carries the whole message; print it without deal.II's
+      // file and line decoration.
+      std::ostringstream info;
+      exc.print_info(info);
+      std::cerr << "\nndda: error: " << info.str() << std::endl;
+      return 1;
+    }
+  catch (const std::exception &exc)
+    {
+      std::cerr << "\nndda: error: " << exc.what() << std::endl;
+      return 1;
+    }
+  catch (...)
+    {
+      std::cerr << "\nndda: unknown error." << std::endl;
+      return 1;
+    }
+  return 0;
+}

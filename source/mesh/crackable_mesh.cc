@@ -1,0 +1,311 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <ndda/mesh/crackable_mesh.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace ndda
+{
+  namespace
+  {
+    double
+    signed_area(const std::vector<Point<2>>         &vertices,
+                const std::array<unsigned int, 3> &t)
+    {
+      const Tensor<1, 2> a = vertices[t[1]] - vertices[t[0]];
+      const Tensor<1, 2> b = vertices[t[2]] - vertices[t[0]];
+      return 0.5 * (a[0] * b[1] - a[1] * b[0]);
+    }
+
+    std::string
+    describe(const geometry::BlockMesh &mesh, const unsigned int cell)
+    {
+      std::ostringstream out;
+      out << "triangle " << cell << " (";
+      for (unsigned int v = 0; v < 3; ++v)
+        out << (v > 0 ? "; " : "") << mesh.vertices[mesh.triangles[cell][v]];
+      out << ")";
+      return out.str();
+    }
+  } // namespace
+
+
+
+  void
+  CrackableMesh::check(const geometry::BlockMesh &mesh)
+  {
+    const unsigned int n_cells = mesh.triangles.size();
+    AssertThrow(n_cells > 0, ExcMessage("Mesh: the scene has no triangles."));
+    AssertThrow(mesh.cell_block.size() == n_cells &&
+                  mesh.cell_material.size() == n_cells,
+                ExcMessage("Mesh: block or material ids missing."));
+
+    double max_extent = 0;
+    for (const auto &v : mesh.vertices)
+      max_extent = std::max({max_extent, std::abs(v[0]), std::abs(v[1])});
+
+    std::vector<unsigned int> vertex_block(mesh.vertices.size(),
+                                           numbers::invalid_unsigned_int);
+    std::map<std::array<unsigned int, 2>, unsigned int> edge_count;
+    std::set<std::array<unsigned int, 3>>               seen;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        const auto &t = mesh.triangles[c];
+        for (const unsigned int v : t)
+          AssertThrow(v < mesh.vertices.size(),
+                      ExcMessage("Mesh: " + std::to_string(c) +
+                                 " refers to a vertex that does not exist."));
+        AssertThrow(mesh.cell_block[c] < mesh.block_names.size(),
+                    ExcMessage("Mesh: " + describe(mesh, c) +
+                               " has no valid block."));
+        const double area = signed_area(mesh.vertices, t);
+        AssertThrow(area > 1e-14 * max_extent * max_extent,
+                    ExcMessage("Mesh: " + describe(mesh, c) +
+                               (area < 0 ? " is clockwise." :
+                                           " has zero area.") +
+                               " Every triangle must be counter-clockwise "
+                               "with positive area."));
+        auto sorted = t;
+        std::sort(sorted.begin(), sorted.end());
+        AssertThrow(sorted[0] != sorted[1] && sorted[1] != sorted[2],
+                    ExcMessage("Mesh: " + describe(mesh, c) +
+                               " repeats a vertex."));
+        AssertThrow(seen.insert(sorted).second,
+                    ExcMessage("Mesh: " + describe(mesh, c) +
+                               " appears twice."));
+        for (unsigned int e = 0; e < 3; ++e)
+          {
+            std::array<unsigned int, 2> edge = {{t[e], t[(e + 1) % 3]}};
+            if (edge[0] > edge[1])
+              std::swap(edge[0], edge[1]);
+            AssertThrow(++edge_count[edge] <= 2,
+                        ExcMessage("Mesh: the edge between vertices " +
+                                   std::to_string(edge[0]) + " and " +
+                                   std::to_string(edge[1]) +
+                                   " is shared by more than two triangles, "
+                                   "e.g. " +
+                                   describe(mesh, c) + "."));
+          }
+        for (const unsigned int v : t)
+          {
+            if (vertex_block[v] == numbers::invalid_unsigned_int)
+              vertex_block[v] = mesh.cell_block[c];
+            AssertThrow(vertex_block[v] == mesh.cell_block[c],
+                        ExcMessage("Mesh: vertex " + std::to_string(v) +
+                                   " at " +
+                                   Utilities::to_string(mesh.vertices[v][0]) +
+                                   ", " +
+                                   Utilities::to_string(mesh.vertices[v][1]) +
+                                   " is shared by two blocks. Blocks must "
+                                   "not share vertices."));
+          }
+      }
+    for (unsigned int v = 0; v < vertex_block.size(); ++v)
+      AssertThrow(vertex_block[v] != numbers::invalid_unsigned_int,
+                  ExcMessage("Mesh: vertex " + std::to_string(v) +
+                             " is not used by any triangle."));
+  }
+
+
+
+  void
+  CrackableMesh::build(const geometry::BlockMesh &mesh)
+  {
+    check(mesh);
+    block_mesh  = mesh;
+    block_names = mesh.block_names;
+    cell_block  = mesh.cell_block;
+
+    std::vector<CellData<2>> cells(mesh.triangles.size(), CellData<2>(3));
+    for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
+      {
+        for (unsigned int v = 0; v < 3; ++v)
+          cells[c].vertices[v] = mesh.triangles[c][v];
+        cells[c].material_id = mesh.cell_material[c];
+      }
+    triangulation.clear();
+    triangulation.create_triangulation(mesh.vertices, cells, SubCellData());
+
+    // deal.II keeps the order of cells and of their vertices; verify it,
+    // since everything that follows relies on it.
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (unsigned int v = 0; v < 3; ++v)
+        AssertThrow(cell->vertex_index(v) ==
+                      mesh.triangles[cell->active_cell_index()][v],
+                    ExcInternalError());
+  }
+
+
+
+  geometry::BlockMesh
+  to_block_mesh(const Triangulation<2> &triangulation,
+                const std::string      &name_prefix)
+  {
+    for (const auto &cell : triangulation.active_cell_iterators())
+      AssertThrow(cell->reference_cell() == ReferenceCells::Triangle,
+                  ExcMessage("Mesh: cell " +
+                             std::to_string(cell->active_cell_index()) +
+                             " is not a triangle. ndda works on triangles "
+                             "only."));
+
+    // Blocks: connected components through edges of equal material id.
+    const unsigned int        n_cells = triangulation.n_active_cells();
+    std::vector<unsigned int> block(n_cells, numbers::invalid_unsigned_int);
+    std::vector<types::material_id> block_material;
+    for (const auto &start : triangulation.active_cell_iterators())
+      {
+        if (block[start->active_cell_index()] != numbers::invalid_unsigned_int)
+          continue;
+        const unsigned int b = block_material.size();
+        block_material.push_back(start->material_id());
+        std::vector<Triangulation<2>::active_cell_iterator> stack = {start};
+        block[start->active_cell_index()]                         = b;
+        while (!stack.empty())
+          {
+            const auto cell = stack.back();
+            stack.pop_back();
+            for (unsigned int f = 0; f < cell->n_faces(); ++f)
+              if (!cell->at_boundary(f))
+                {
+                  const auto neighbor = cell->neighbor(f);
+                  if (neighbor->material_id() == cell->material_id() &&
+                      block[neighbor->active_cell_index()] ==
+                        numbers::invalid_unsigned_int)
+                    {
+                      block[neighbor->active_cell_index()] = b;
+                      stack.push_back(neighbor);
+                    }
+                }
+          }
+      }
+
+    geometry::BlockMesh mesh;
+    for (unsigned int b = 0; b < block_material.size(); ++b)
+      mesh.block_names.push_back(name_prefix + std::to_string(b));
+
+    // One vertex copy per (vertex, block).
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> copy;
+    const auto &vertices = triangulation.get_vertices();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const unsigned int          b = block[cell->active_cell_index()];
+        std::array<unsigned int, 3> t;
+        for (unsigned int v = 0; v < 3; ++v)
+          {
+            const auto key = std::make_pair(cell->vertex_index(v), b);
+            auto       it  = copy.find(key);
+            if (it == copy.end())
+              {
+                it = copy.emplace(key, mesh.vertices.size()).first;
+                mesh.vertices.push_back(vertices[cell->vertex_index(v)]);
+              }
+            t[v] = it->second;
+          }
+        if (signed_area(mesh.vertices, t) < 0)
+          std::swap(t[1], t[2]);
+        mesh.triangles.push_back(t);
+        mesh.cell_block.push_back(b);
+        mesh.cell_material.push_back(cell->material_id());
+      }
+    return mesh;
+  }
+
+
+
+  void
+  CrackableMesh::build(const Triangulation<2> &input)
+  {
+    build(to_block_mesh(input, "block "));
+  }
+
+
+
+  void
+  CrackableMesh::read_msh(
+    const std::string                               &filename,
+    const std::function<unsigned int(unsigned int)> &material_of_tag)
+  {
+    // read_msh(std::istream&) keeps coincident nodes of different blocks
+    // apart and keeps unnamed physical tags (DESIGN.md, measured facts).
+    std::ifstream in(filename);
+    AssertThrow(in.good(),
+                ExcMessage("Geometry/Mesh file: cannot open '" + filename +
+                           "'."));
+    Triangulation<2> input;
+    GridIn<2>        grid_in(input);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream message;
+        exc.print_info(message);
+        AssertThrow(false,
+                    ExcMessage("Geometry/Mesh file: '" + filename +
+                               "' cannot be read as a gmsh mesh of "
+                               "triangles: " +
+                               message.str()));
+      }
+    auto mesh = to_block_mesh(input, "block ");
+    for (auto &material : mesh.cell_material)
+      material = material_of_tag(material);
+    build(mesh);
+  }
+
+
+
+  void
+  CrackableMesh::move_vertices(const std::vector<Tensor<1, 2>> &displacement)
+  {
+    AssertDimension(displacement.size(), triangulation.n_vertices());
+    // The triangulation's vertices are changed through the cells, as in
+    // step-18: each vertex once.
+    std::vector<bool> moved(triangulation.n_vertices(), false);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (unsigned int v = 0; v < 3; ++v)
+        {
+          const unsigned int i = cell->vertex_index(v);
+          if (!moved[i])
+            {
+              cell->vertex(v) += displacement[i];
+              block_mesh.vertices[i] += displacement[i];
+              moved[i] = true;
+            }
+        }
+  }
+
+
+
+  std::pair<Point<2>, Point<2>>
+  CrackableMesh::bounding_box() const
+  {
+    Point<2> lower = block_mesh.vertices[0], upper = block_mesh.vertices[0];
+    for (const auto &v : block_mesh.vertices)
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          lower[d] = std::min(lower[d], v[d]);
+          upper[d] = std::max(upper[d], v[d]);
+        }
+    return {lower, upper};
+  }
+
+
+
+  double
+  CrackableMesh::area() const
+  {
+    double sum = 0;
+    for (const auto &t : block_mesh.triangles)
+      sum += signed_area(block_mesh.vertices, t);
+    return sum;
+  }
+} // namespace ndda

@@ -1,0 +1,1546 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <ndda/simulator.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace ndda
+{
+  namespace
+  {
+    /** A stream buffer that writes to two buffers (console and log). */
+    class TeeBuffer : public std::streambuf
+    {
+    public:
+      TeeBuffer(std::streambuf *a, std::streambuf *b)
+        : a(a)
+        , b(b)
+      {}
+
+    protected:
+      int
+      overflow(int c) override
+      {
+        if (c == EOF)
+          return !EOF;
+        const int ra = a->sputc(c), rb = b->sputc(c);
+        return (ra == EOF || rb == EOF) ? EOF : c;
+      }
+      int
+      sync() override
+      {
+        return (a->pubsync() == 0 && b->pubsync() == 0) ? 0 : -1;
+      }
+
+    private:
+      std::streambuf *a, *b;
+    };
+
+    std::string
+    to_string(const Point<2> &p)
+    {
+      std::ostringstream out;
+      out << "(" << p[0] << ", " << p[1] << ")";
+      return out.str();
+    }
+
+    double
+    distance_to_segment(const Point<2> &p, const geometry::Segment &s)
+    {
+      const Tensor<1, 2> ab = s.b - s.a;
+      const double       t =
+        std::clamp(((p - s.a) * ab) / ab.norm_square(), 0., 1.);
+      return p.distance(s.a + t * ab);
+    }
+
+    std::unique_ptr<FunctionParser<2>>
+    make_function(const std::string &expression,
+                  const unsigned int n_components,
+                  const bool         time_dependent)
+    {
+      auto function = std::make_unique<FunctionParser<2>>(n_components);
+      function->initialize(time_dependent ? "x,y,t" : "x,y",
+                           expression,
+                           {{"pi", numbers::PI}},
+                           time_dependent);
+      return function;
+    }
+
+    /** Rotate the 2D vector stored at dofs (i, j) by the angle omega. */
+    void
+    rotate_pair(Vector<double>               &v,
+                const types::global_dof_index i,
+                const types::global_dof_index j,
+                const double                  c,
+                const double                  s)
+    {
+      const double x = v[i], y = v[j];
+      v[i]           = c * x - s * y;
+      v[j]           = s * x + c * y;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(const std::string &parameter_file)
+    : console(std::cout.rdbuf())
+    , pcout(console, true)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , mapping(FE_SimplexP<dim>(1))
+    , dof_handler(mesh.get_triangulation())
+  {
+    parameters.read_file(parameter_file, prm);
+    parameters_from_file = true;
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(const parameters::Parameters &parameters,
+                            const Triangulation<dim>     *triangulation)
+    : parameters(parameters)
+    , console(std::cout.rdbuf())
+    , pcout(console, true)
+    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , mapping(FE_SimplexP<dim>(1))
+    , dof_handler(mesh.get_triangulation())
+  {
+    if (triangulation != nullptr)
+      {
+        user_triangulation = std::make_unique<Triangulation<dim>>();
+        user_triangulation->copy_triangulation(*triangulation);
+      }
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::~Simulator()
+  {
+    dof_handler.clear();
+    console.rdbuf(std::cout.rdbuf());
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_mesh(const Triangulation<dim> *triangulation)
+  {
+    const auto &geometry = parameters.geometry;
+    if (triangulation != nullptr)
+      mesh.build(*triangulation);
+    else if (!geometry.mesh_file.empty())
+      {
+        const auto material_of_tag = [&](const unsigned int tag) {
+          for (const auto &[t, name] : geometry.mesh_file_materials)
+            if (t == tag)
+              return parameters.materials.id(name,
+                                             "Geometry/Mesh file materials");
+          AssertThrow(geometry.mesh_file_materials.empty(),
+                      ExcMessage("Geometry/Mesh file materials: the mesh "
+                                 "has physical tag " +
+                                 std::to_string(tag) +
+                                 ", which is not listed. Give a material "
+                                 "for every physical surface."));
+          return 0u;
+        };
+        mesh.read_msh(geometry.mesh_file, material_of_tag);
+      }
+    else
+      {
+        geometry::SceneGeometry scene;
+        scene.blocks    = geometry.blocks;
+        scene.regions   = geometry.regions;
+        scene.min_angle = geometry.min_angle;
+        // Every point where something acts becomes a mesh vertex.
+        auto &required = scene.required_vertices;
+        for (const auto &load : parameters.loads.point_loads)
+          required.push_back(load.point);
+        for (const auto &load : parameters.loads.line_loads)
+          {
+            required.push_back(load.segment.a);
+            required.push_back(load.segment.b);
+          }
+        for (const auto &bc : parameters.boundary_conditions.conditions)
+          {
+            required.insert(required.end(), bc.points.begin(), bc.points.end());
+            for (const auto &s : bc.segments)
+              {
+                required.push_back(s.a);
+                required.push_back(s.b);
+              }
+          }
+        for (const auto &bolt : parameters.bolts.bolts)
+          {
+            required.push_back(bolt.first);
+            required.push_back(bolt.second);
+          }
+        required.insert(required.end(),
+                        parameters.output.measure_points.begin(),
+                        parameters.output.measure_points.end());
+        mesh.build(geometry::mesh_scene(scene));
+      }
+    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+      AssertThrow(cell->material_id() < parameters.materials.materials.size(),
+                  ExcMessage("Mesh: a cell has material id " +
+                             std::to_string(cell->material_id()) +
+                             ", but only " +
+                             std::to_string(
+                               parameters.materials.materials.size()) +
+                             " materials are declared in Materials/Names."));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup()
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    make_mesh(user_triangulation.get());
+    const auto box    = mesh.bounding_box();
+    scene_half_height = 0.5 * std::max(box.second[1] - box.first[1],
+                                       1e-3 * (box.second[0] - box.first[0]));
+
+    setup_dofs();
+    setup_constraints();
+    setup_loads();
+    setup_measure_points();
+
+    // Initial state: stress and velocity per block.
+    const unsigned int n_q = element_cache.n_quadrature_points();
+    stress.assign(mesh.get_triangulation().n_active_cells(),
+                  std::vector<SymmetricTensor<2, dim>>(n_q));
+    std::vector<parameters::InitialState> block_state(mesh.n_blocks());
+    const auto &names = mesh.get_block_names();
+    for (unsigned int b = 0; b < names.size(); ++b)
+      {
+        for (unsigned int i = 0; i < parameters.geometry.blocks.size(); ++i)
+          if (parameters.geometry.blocks[i].name == names[b])
+            block_state[b] = parameters.geometry.block_states[i];
+        for (unsigned int i = 0; i < parameters.geometry.regions.size(); ++i)
+          if (names[b].rfind(parameters.geometry.regions[i].name + ".", 0) ==
+              0)
+            block_state[b] = parameters.geometry.region_states[i];
+      }
+    std::vector<std::unique_ptr<FunctionParser<dim>>> initial_velocity;
+    for (const auto &state : block_state)
+      initial_velocity.push_back(make_function(state.velocity, dim, false));
+
+    const auto &fe_ref = *fe;
+    const auto  support =
+      fe_ref.base_element(0).get_unit_support_points();
+    std::vector<types::global_dof_index> dofs(fe_ref.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const unsigned int b = mesh.block_of_cell(cell->active_cell_index());
+        const auto        &s = block_state[b].stress;
+        for (auto &sigma : stress[cell->active_cell_index()])
+          {
+            sigma[0][0] = s[0];
+            sigma[1][1] = s[1];
+            sigma[0][1] = s[2];
+          }
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            const auto [component, base] = fe_ref.system_to_component_index(i);
+            const Point<dim> x = mapping.transform_unit_to_real_cell(
+              cell, support[base]);
+            velocity[dofs[i]] = initial_velocity[b]->value(x, component);
+          }
+      }
+
+    compute_internal_force();
+    is_set_up = true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_dofs()
+  {
+    const unsigned int degree = parameters.control.element_degree;
+    fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
+    quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);
+    face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
+    dof_handler.distribute_dofs(*fe);
+
+    // Index caches for the loops of the time step: deal.II's iterators and
+    // get_dof_indices() cost more than the arithmetic of a P1 cell.
+    const unsigned int n_dofs_per_cell = fe->n_dofs_per_cell();
+    cell_dof_indices.resize(mesh.get_triangulation().n_active_cells() *
+                            n_dofs_per_cell);
+    local_component.resize(n_dofs_per_cell);
+    for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
+      local_component[i] = fe->system_to_component_index(i).first;
+    vertex_dofs.resize(mesh.get_triangulation().n_vertices());
+    dof_to_node.assign(dof_handler.n_dofs(), numbers::invalid_unsigned_int);
+    node_dofs.clear();
+    std::vector<types::global_dof_index> dofs(n_dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(),
+                  dofs.end(),
+                  cell_dof_indices.begin() +
+                    cell->active_cell_index() * n_dofs_per_cell);
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          for (unsigned int c = 0; c < dim; ++c)
+            vertex_dofs[cell->vertex_index(v)][c] =
+              cell->vertex_dof_index(v, c);
+        for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
+          {
+            const auto [component, base] = fe->system_to_component_index(i);
+            if (component == 0 &&
+                dof_to_node[dofs[i]] == numbers::invalid_unsigned_int)
+              {
+                const auto j = dofs[fe->component_to_system_index(1, base)];
+                dof_to_node[dofs[i]] = dof_to_node[j] = node_dofs.size();
+                node_dofs.push_back({{dofs[i], j}});
+              }
+          }
+      }
+
+    const unsigned int n = dof_handler.n_dofs();
+    displacement.reinit(n);
+    velocity.reinit(n);
+    acceleration.reinit(n);
+    internal_force.reinit(n);
+    for (unsigned int d = 0; d < dim; ++d)
+      gravity_load[d].reinit(n);
+
+    element_cache.update(dof_handler,
+                         mapping,
+                         *quadrature,
+                         parameters.materials,
+                         false,
+                         0.);
+    double max_modulus = 0;
+    for (const auto &m : parameters.materials.materials)
+      max_modulus = std::max(max_modulus, m.youngs_modulus);
+    penalty_stiffness = parameters.control.penalty_factor * max_modulus *
+                        parameters.materials.thickness;
+    linear_solver =
+      std::make_unique<LinearSolver>(parameters.control.linear_solver,
+                                     parameters.control.solver_tolerance);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  Simulator<dim>::find_vertex(const Point<dim>  &p,
+                              const std::string &entry) const
+  {
+    const auto  &vertices = mesh.get_block_mesh().vertices;
+    const auto   box      = mesh.bounding_box();
+    const double tolerance =
+      1e-8 * std::max(1., box.first.distance(box.second));
+    unsigned int best = numbers::invalid_unsigned_int;
+    double       best_distance = tolerance;
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      if (vertices[v].distance(p) <= best_distance)
+        {
+          best          = v;
+          best_distance = vertices[v].distance(p);
+        }
+    if (best == numbers::invalid_unsigned_int)
+      {
+        // Outside, or inside but not a vertex (possible for imported meshes).
+        const auto found = GridTools::find_active_cell_around_point(
+          mapping, mesh.get_triangulation(), p);
+        AssertThrow(found.first.state() == IteratorState::valid,
+                    ExcMessage(entry + ": the point " + to_string(p) +
+                               " lies outside every block. Move it into "
+                               "or onto a block."));
+        AssertThrow(false,
+                    ExcMessage(entry + ": the point " + to_string(p) +
+                               " is not a vertex of the mesh. With an "
+                               "imported mesh, give points that are mesh "
+                               "vertices."));
+      }
+    return best;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_constraints()
+  {
+    // Which two dofs belong to the same node: per vertex dof of component 0
+    // the dof of component 1 at the same support point.
+    const auto                          &fe_ref = *fe;
+    std::vector<types::global_dof_index> partner(dof_handler.n_dofs());
+    std::vector<unsigned int>            component(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dofs(fe_ref.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            const auto [c, base] = fe_ref.system_to_component_index(i);
+            component[dofs[i]]   = c;
+            if (c == 0)
+              {
+                const unsigned int j =
+                  fe_ref.component_to_system_index(1, base);
+                partner[dofs[i]] = dofs[j];
+                partner[dofs[j]] = dofs[i];
+              }
+          }
+      }
+    std::vector<Point<dim>> support_points(dof_handler.n_dofs());
+    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+
+    // Boundary nodes, for constraints on segments.
+    std::vector<bool> on_boundary(dof_handler.n_dofs(), false);
+    std::vector<types::global_dof_index> face_dofs(
+      fe_ref.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (unsigned int f = 0; f < cell->n_faces(); ++f)
+        if (cell->at_boundary(f))
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (const auto dof : face_dofs)
+              on_boundary[dof] = true;
+          }
+
+    const auto   box = mesh.bounding_box();
+    const double tolerance =
+      1e-8 * std::max(1., box.first.distance(box.second));
+
+    node_constraints.clear();
+    constraint_functions.clear();
+    std::vector<bool> constrained(dof_handler.n_dofs(), false);
+    for (const auto &bc : parameters.boundary_conditions.conditions)
+      {
+        const std::string where = "Boundary conditions/" + bc.name;
+        unsigned int      function = numbers::invalid_unsigned_int;
+        if (bc.type != parameters::ConstraintType::fixed)
+          {
+            function = constraint_functions.size();
+            constraint_functions.push_back(make_function(
+              bc.value,
+              bc.type == parameters::ConstraintType::roller ? 1 : dim,
+              true));
+          }
+        const double   angle = bc.roller_angle * numbers::PI / 180.;
+        Tensor<1, dim> normal;
+        normal[0] = -std::sin(angle);
+        normal[1] = std::cos(angle);
+
+        std::vector<types::global_dof_index> nodes;
+        for (const auto &p : bc.points)
+          {
+            const unsigned int vertex = find_vertex(p, where + "/Points");
+            const Point<dim>   x      = mesh.get_block_mesh().vertices[vertex];
+            for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+              if (component[i] == 0 && support_points[i].distance(x) <= tolerance)
+                nodes.push_back(i);
+          }
+        for (const auto &segment : bc.segments)
+          {
+            const unsigned int before = nodes.size();
+            for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+              if (component[i] == 0 && on_boundary[i] &&
+                  distance_to_segment(support_points[i], segment) <= tolerance)
+                nodes.push_back(i);
+            AssertThrow(nodes.size() > before,
+                        ExcMessage(where + "/Segments: no boundary vertex "
+                                           "lies on the segment " +
+                                   to_string(segment.a) + " - " +
+                                   to_string(segment.b) +
+                                   ". Give a segment along a block's "
+                                   "boundary."));
+          }
+        for (const auto i : nodes)
+          {
+            if (constrained[i])
+              continue; // The first condition listed for a node wins.
+            constrained[i] = constrained[partner[i]] = true;
+            NodeConstraint nc;
+            nc.dofs     = {{i, partner[i]}};
+            nc.position = support_points[i];
+            nc.type     = bc.type;
+            nc.normal   = normal;
+            nc.function = function;
+            nc.name     = bc.name;
+            node_constraints.push_back(nc);
+          }
+      }
+
+    constraints.clear();
+    if (parameters.control.constraint_method ==
+        parameters::ConstraintMethod::exact)
+      for (const auto &nc : node_constraints)
+        {
+          if (nc.type != parameters::ConstraintType::roller)
+            {
+              constraints.add_line(nc.dofs[0]);
+              constraints.add_line(nc.dofs[1]);
+            }
+          else
+            {
+              // n . u = d: solve for the component with the larger normal
+              // entry; the inhomogeneity is handled by the step's
+              // prescribed increment (see try_time_step()).
+              const unsigned int k = std::abs(nc.normal[1]) >=
+                                         std::abs(nc.normal[0]) ?
+                                       1 :
+                                       0;
+              constraints.add_line(nc.dofs[k]);
+              constraints.add_entry(nc.dofs[k],
+                                    nc.dofs[1 - k],
+                                    -nc.normal[1 - k] / nc.normal[k]);
+            }
+        }
+    constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, true);
+    // Bolts couple two nodes that may lie in different blocks.
+    bolts.clear();
+    for (const auto &b : parameters.bolts.bolts)
+      {
+        const std::string where = "Bolts/" + b.name + "/End points";
+        Bolt              bolt;
+        const Point<dim>  ends[2] = {b.first, b.second};
+        for (unsigned int e = 0; e < 2; ++e)
+          {
+            const Point<dim> x =
+              mesh.get_block_mesh().vertices[find_vertex(ends[e], where)];
+            bool found = false;
+            for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+              if (component[i] == 0 && support_points[i].distance(x) <= tolerance)
+                {
+                  bolt.dofs[2 * e]     = i;
+                  bolt.dofs[2 * e + 1] = partner[i];
+                  found                = true;
+                  break;
+                }
+            AssertThrow(found, ExcInternalError());
+          }
+        bolt.first      = b.first;
+        bolt.second     = b.second;
+        bolt.stiffness  = b.stiffness;
+        bolt.pretension = b.pretension;
+        for (const auto i : bolt.dofs)
+          for (const auto j : bolt.dofs)
+            dsp.add(i, j);
+        bolts.push_back(bolt);
+      }
+    constraints.condense(dsp);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    mass_matrix.reinit(sparsity_pattern);
+    damping_matrix.reinit(sparsity_pattern);
+    system_matrix.reinit(sparsity_pattern);
+    condensed_matrix.reinit(sparsity_pattern);
+  }
+
+
+
+  template <int dim>
+  typename Simulator<dim>::PointEvaluator
+  Simulator<dim>::make_point_evaluator(const Point<dim>  &p,
+                                       const std::string &entry) const
+  {
+    const auto found =
+      GridTools::find_active_cell_around_point(mapping, dof_handler, p);
+    AssertThrow(found.first.state() == IteratorState::valid,
+                ExcMessage(entry + ": the point " + to_string(p) +
+                           " lies outside every block. Move it into or onto "
+                           "a block."));
+    PointEvaluator evaluator;
+    evaluator.cell = found.first->active_cell_index();
+    evaluator.dofs.resize(fe->n_dofs_per_cell());
+    found.first->get_dof_indices(evaluator.dofs);
+    for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+      {
+        evaluator.shape_values.push_back(fe->shape_value(i, found.second));
+        evaluator.component.push_back(fe->system_to_component_index(i).first);
+      }
+    return evaluator;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_loads()
+  {
+    gravity = make_function(parameters.loads.gravity, dim, true);
+    point_load_functions.clear();
+    point_load_points.clear();
+    for (const auto &load : parameters.loads.point_loads)
+      {
+        point_load_functions.push_back(make_function(load.force, dim, true));
+        point_load_points.push_back(
+          make_point_evaluator(load.point, "Loads/" + load.name + "/Point"));
+      }
+
+    line_load_functions.clear();
+    loaded_faces.clear();
+    const auto   box = mesh.bounding_box();
+    const double tolerance =
+      1e-8 * std::max(1., box.first.distance(box.second));
+    for (unsigned int l = 0; l < parameters.loads.line_loads.size(); ++l)
+      {
+        const auto &load = parameters.loads.line_loads[l];
+        line_load_functions.push_back(
+          make_function(load.value, load.is_pressure ? 1 : dim, true));
+        unsigned int n_faces = 0;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (unsigned int f = 0; f < cell->n_faces(); ++f)
+            if (cell->at_boundary(f) &&
+                distance_to_segment(cell->face(f)->vertex(0), load.segment) <=
+                  tolerance &&
+                distance_to_segment(cell->face(f)->vertex(1), load.segment) <=
+                  tolerance)
+              {
+                LoadedFace face;
+                face.line_load = l;
+                face.cell      = cell->active_cell_index();
+                face.face      = f;
+                loaded_faces.push_back(face);
+                ++n_faces;
+              }
+        AssertThrow(n_faces > 0,
+                    ExcMessage("Loads/" + load.name +
+                               "/Segment: no boundary edge lies on the "
+                               "segment " +
+                               to_string(load.segment.a) + " - " +
+                               to_string(load.segment.b) +
+                               ". Give a segment along a block's boundary."));
+      }
+    update_loaded_faces();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_loaded_faces()
+  {
+    // Quadrature data of the loaded faces on the current geometry.
+    FEFaceValues<dim> fe_face_values(mapping,
+                                     *fe,
+                                     *face_quadrature,
+                                     update_values | update_JxW_values |
+                                       update_normal_vectors |
+                                       update_quadrature_points);
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      cells.push_back(cell);
+    for (auto &face : loaded_faces)
+      {
+        const auto &cell = cells[face.cell];
+        fe_face_values.reinit(cell, face.face);
+        face.dofs.resize(fe->n_dofs_per_cell());
+        cell->get_dof_indices(face.dofs);
+        face.component.clear();
+        face.weighted_shape.clear();
+        face.points.clear();
+        face.normals.clear();
+        for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+          face.component.push_back(fe->system_to_component_index(i).first);
+        for (unsigned int q = 0; q < face_quadrature->size(); ++q)
+          {
+            std::vector<double> w(fe->n_dofs_per_cell());
+            for (unsigned int i = 0; i < w.size(); ++i)
+              w[i] = fe_face_values.shape_value_component(i,
+                                                          q,
+                                                          face.component[i]) *
+                     fe_face_values.JxW(q) * parameters.materials.thickness;
+            face.weighted_shape.push_back(w);
+            face.points.push_back(fe_face_values.quadrature_point(q));
+            face.normals.push_back(fe_face_values.normal_vector(q));
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_measure_points()
+  {
+    measure_points.clear();
+    for (const auto &p : parameters.output.measure_points)
+      measure_points.push_back(
+        make_point_evaluator(p, "Output/Measure points"));
+    measure_histories.assign(measure_points.size(), {});
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_global_matrices()
+  {
+    stiffness_matrix = 0;
+    mass_matrix      = 0;
+    damping_matrix   = 0;
+    has_damping      = false;
+    const unsigned int                   n_dofs = fe->n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n_dofs);
+    for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
+      {
+        const auto &data = element_cache[c];
+        std::copy(&cell_dof_indices[c * n_dofs],
+                  &cell_dof_indices[c * n_dofs] + n_dofs,
+                  dofs.begin());
+        stiffness_matrix.add(dofs, data.stiffness);
+        mass_matrix.add(dofs, data.mass);
+        if (data.viscosity_over_density > 0)
+          {
+            has_damping = true;
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              for (unsigned int j = 0; j < dofs.size(); ++j)
+                damping_matrix.add(dofs[i],
+                                   dofs[j],
+                                   data.viscosity_over_density *
+                                     data.mass(i, j));
+          }
+      }
+
+    // Bolts, thesis 3.6: k_b L L^T with L the unit vector between the
+    // anchors on the current geometry.
+    for (const auto &bolt : bolts)
+      {
+        Point<dim> x[2];
+        for (unsigned int e = 0; e < 2; ++e)
+          for (unsigned int d = 0; d < dim; ++d)
+            x[e][d] = (e == 0 ? bolt.first : bolt.second)[d] +
+                      displacement[bolt.dofs[2 * e + d]];
+        const Tensor<1, dim> l = (x[0] - x[1]) / x[0].distance(x[1]);
+        for (unsigned int a = 0; a < 2; ++a)
+          for (unsigned int b = 0; b < 2; ++b)
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                stiffness_matrix.add(bolt.dofs[2 * a + i],
+                                     bolt.dofs[2 * b + j],
+                                     (a == b ? 1. : -1.) * bolt.stiffness *
+                                       l[i] * l[j]);
+      }
+    matrices_changed = true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_internal_force()
+  {
+    // f_int = sum over cells of t * int B^T sigma (thesis 3.25 with the
+    // accumulated stress in place of the initial stress).
+    internal_force = 0;
+    const unsigned int n_dofs = fe->n_dofs_per_cell();
+    const unsigned int n_q    = element_cache.n_quadrature_points();
+    for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
+      {
+        const auto &data = element_cache[c];
+        const auto *dofs = &cell_dof_indices[c * n_dofs];
+        for (unsigned int q = 0; q < n_q; ++q)
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            internal_force[dofs[i]] +=
+              (data.strain[q * n_dofs + i] * stress[c][q]) * data.weight[q];
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_external_force(const double    t,
+                                          Vector<double> &force) const
+  {
+    force.reinit(dof_handler.n_dofs());
+    // Gravity, thesis 3.5.3 with consistent loads: f = M g.
+    const Point<dim> origin;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        gravity->set_time(t);
+        const double g = gravity->value(origin, d);
+        if (g != 0.)
+          force.add(g, gravity_load[d]);
+      }
+    // Point loads, thesis 3.5.1: f = N^T p at the material point.
+    for (unsigned int l = 0; l < point_load_points.size(); ++l)
+      {
+        const auto &evaluator = point_load_points[l];
+        point_load_functions[l]->set_time(t);
+        const auto &p = parameters.loads.point_loads[l].point;
+        for (unsigned int i = 0; i < evaluator.dofs.size(); ++i)
+          force[evaluator.dofs[i]] +=
+            evaluator.shape_values[i] *
+            point_load_functions[l]->value(p, evaluator.component[i]);
+      }
+    // Line loads, thesis 3.5.2, integrated with the element's own shape
+    // functions on the face.
+    for (const auto &face : loaded_faces)
+      {
+        auto &function = *line_load_functions[face.line_load];
+        function.set_time(t);
+        const bool pressure =
+          parameters.loads.line_loads[face.line_load].is_pressure;
+        for (unsigned int q = 0; q < face.points.size(); ++q)
+          {
+            Tensor<1, dim> traction;
+            if (pressure)
+              traction = -function.value(face.points[q], 0) * face.normals[q];
+            else
+              for (unsigned int d = 0; d < dim; ++d)
+                traction[d] = function.value(face.points[q], d);
+            for (unsigned int i = 0; i < face.dofs.size(); ++i)
+              force[face.dofs[i]] +=
+                face.weighted_shape[q][i] * traction[face.component[i]];
+          }
+      }
+    // Bolt pretension pulls the anchors together.
+    for (const auto &bolt : bolts)
+      if (bolt.pretension != 0.)
+        {
+          Point<dim> x[2];
+          for (unsigned int e = 0; e < 2; ++e)
+            for (unsigned int d = 0; d < dim; ++d)
+              x[e][d] = (e == 0 ? bolt.first : bolt.second)[d] +
+                        displacement[bolt.dofs[2 * e + d]];
+          const Tensor<1, dim> l = (x[0] - x[1]) / x[0].distance(x[1]);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              force[bolt.dofs[d]] -= bolt.pretension * l[d];
+              force[bolt.dofs[dim + d]] += bolt.pretension * l[d];
+            }
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::build_element_matrices(const bool only_moved_cells)
+  {
+    TimerOutput::Scope scope(timer, "element matrices");
+    const double       tolerance = parameters.control.matrix_update_tolerance;
+    const unsigned int n_computed =
+      element_cache.update(dof_handler,
+                           mapping,
+                           *quadrature,
+                           parameters.materials,
+                           only_moved_cells && tolerance > 0.,
+                           tolerance);
+    if (n_computed == 0 && only_moved_cells)
+      return;
+    ++n_matrix_rebuilds;
+    assemble_global_matrices();
+    // Gravity load vectors: M times a unit acceleration.
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        Vector<double> unit(dof_handler.n_dofs());
+        std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (fe->system_to_component_index(i).first == d)
+                unit[dofs[i]] = 1.;
+          }
+        mass_matrix.vmult(gravity_load[d], unit);
+      }
+    compute_internal_force();
+    if (only_moved_cells)
+      update_loaded_faces();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_system_matrix(const double dt)
+  {
+    TimerOutput::Scope scope(timer, "factorize");
+    const auto        &control = parameters.control;
+    double             c_mass  = 0.;
+    if (control.analysis_type != parameters::AnalysisType::quasi_static)
+      c_mass =
+        (control.time_integrator == parameters::TimeIntegrator::dda ? 2. :
+                                                                      4.) /
+        (dt * dt);
+    system_matrix.copy_from(stiffness_matrix);
+    if (c_mass != 0.)
+      system_matrix.add(c_mass, mass_matrix);
+    if (has_damping)
+      system_matrix.add(1. / dt, damping_matrix);
+    if (control.constraint_method == parameters::ConstraintMethod::penalty)
+      for (const auto &nc : node_constraints)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            {
+              const double k =
+                nc.type == parameters::ConstraintType::roller ?
+                  penalty_stiffness * nc.normal[i] * nc.normal[j] :
+                  (i == j ? penalty_stiffness : 0.);
+              if (k != 0.)
+                system_matrix.add(nc.dofs[i], nc.dofs[j], k);
+            }
+    condensed_matrix.copy_from(system_matrix);
+    constraints.condense(condensed_matrix);
+    linear_solver->factorize(condensed_matrix);
+    factorized_dt    = dt;
+    matrices_changed = false;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_initial_acceleration()
+  {
+    // Newmark needs the acceleration at t = 0: M a0 = f_ext(0) - f_int, with
+    // zero acceleration at constrained dofs.
+    Vector<double> rhs;
+    assemble_external_force(time, rhs);
+    rhs -= internal_force;
+    SparseMatrix<double> m(sparsity_pattern);
+    m.copy_from(mass_matrix);
+    if (parameters.control.constraint_method ==
+        parameters::ConstraintMethod::penalty)
+      for (const auto &nc : node_constraints)
+        for (const auto dof : nc.dofs)
+          {
+            rhs[dof] = 0;
+            for (auto entry = m.begin(dof); entry != m.end(dof); ++entry)
+              entry->value() = (entry->column() == dof ? 1. : 0.);
+          }
+    constraints.condense(m);
+    constraints.condense(rhs);
+    SparseDirectUMFPACK solver;
+    solver.initialize(m);
+    solver.vmult(acceleration, rhs);
+    constraints.distribute(acceleration);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prescribed_increment(const double    t0,
+                                       const double    dt,
+                                       Vector<double> &increment) const
+  {
+    // The increment that brings every constrained node to its prescribed
+    // value at t0 + dt, measured from where it is now (so that no error
+    // accumulates).
+    increment = 0;
+    for (const auto &nc : node_constraints)
+      {
+        Tensor<1, dim> current;
+        for (unsigned int d = 0; d < dim; ++d)
+          current[d] = displacement[nc.dofs[d]];
+        const Point<dim> x0 = nc.position - current;
+        Tensor<1, dim>   target_increment;
+        switch (nc.type)
+          {
+            case parameters::ConstraintType::fixed:
+              target_increment = -current;
+              break;
+            case parameters::ConstraintType::displacement:
+              {
+                auto &f = *constraint_functions[nc.function];
+                f.set_time(t0 + dt);
+                for (unsigned int d = 0; d < dim; ++d)
+                  target_increment[d] = f.value(x0, d) - current[d];
+                break;
+              }
+            case parameters::ConstraintType::velocity:
+              {
+                auto &f = *constraint_functions[nc.function];
+                f.set_time(t0 + 0.5 * dt);
+                for (unsigned int d = 0; d < dim; ++d)
+                  target_increment[d] = f.value(x0, d) * dt;
+                break;
+              }
+            case parameters::ConstraintType::roller:
+              {
+                auto &f = *constraint_functions[nc.function];
+                f.set_time(t0 + dt);
+                // Only the normal part is prescribed.
+                target_increment =
+                  (f.value(x0, 0) - nc.normal * current) * nc.normal;
+                break;
+              }
+          }
+        if (parameters.control.constraint_method ==
+              parameters::ConstraintMethod::exact &&
+            nc.type == parameters::ConstraintType::roller)
+          {
+            // Put the whole normal increment on the dependent component,
+            // see setup_constraints().
+            const unsigned int k =
+              std::abs(nc.normal[1]) >= std::abs(nc.normal[0]) ? 1 : 0;
+            increment[nc.dofs[k]] = (target_increment * nc.normal) / nc.normal[k];
+          }
+        else
+          for (unsigned int d = 0; d < dim; ++d)
+            increment[nc.dofs[d]] = target_increment[d];
+      }
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::try_time_step(const double dt)
+  {
+    const auto &control = parameters.control;
+    const bool  inertia =
+      control.analysis_type != parameters::AnalysisType::quasi_static;
+    const bool newmark =
+      control.time_integrator == parameters::TimeIntegrator::newmark;
+
+    if (matrices_changed || dt != factorized_dt)
+      assemble_system_matrix(dt);
+
+    TimerOutput::Scope scope(timer, "solve");
+    // Right-hand side at the end of the step (thesis 3.15):
+    // f_ext(t1) - f_int + inertia terms of the integrator.
+    Vector<double> rhs;
+    assemble_external_force(time + dt, rhs);
+    rhs -= internal_force;
+    if (inertia)
+      {
+        Vector<double> mv(velocity);
+        if (newmark)
+          {
+            mv *= 4. / dt;
+            mv += acceleration;
+          }
+        else
+          mv *= 2. / dt;
+        mass_matrix.vmult_add(rhs, mv);
+      }
+
+    Vector<double> prescribed(dof_handler.n_dofs());
+    prescribed_increment(time, dt, prescribed);
+    Vector<double> d(dof_handler.n_dofs());
+    if (control.constraint_method == parameters::ConstraintMethod::exact)
+      {
+        // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies
+        // the homogeneous constraints, so the factorization stays valid.
+        Vector<double> tmp(dof_handler.n_dofs());
+        system_matrix.vmult(tmp, prescribed);
+        rhs -= tmp;
+        constraints.condense(rhs);
+        last_solver_iterations = linear_solver->solve(d, rhs);
+        constraints.distribute(d);
+        d += prescribed;
+      }
+    else
+      {
+        for (const auto &nc : node_constraints)
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              rhs[nc.dofs[i]] +=
+                (nc.type == parameters::ConstraintType::roller ?
+                   nc.normal[i] * nc.normal[j] :
+                   (i == j ? 1. : 0.)) *
+                penalty_stiffness * prescribed[nc.dofs[j]];
+        last_solver_iterations = linear_solver->solve(d, rhs);
+      }
+
+    // DDA step control: the largest nodal displacement must stay below the
+    // allowed fraction of half the scene height.
+    max_increment = 0;
+    for (const auto &dofs : vertex_dofs)
+      max_increment = std::max(max_increment,
+                               d[dofs[0]] * d[dofs[0]] +
+                                 d[dofs[1]] * d[dofs[1]]);
+    max_increment = std::sqrt(max_increment);
+    if (max_increment >
+        control.max_displacement_ratio * scene_half_height)
+      return false;
+
+    update_state(d, dt);
+    return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_state(const Vector<double> &d, const double dt)
+  {
+    TimerOutput::Scope scope(timer, "update");
+    const auto        &control = parameters.control;
+
+    // Velocity and acceleration at the end of the step. Both integrators
+    // give v1 = 2 d / dt - v0; Newmark also carries the acceleration.
+    if (control.analysis_type == parameters::AnalysisType::quasi_static)
+      {
+        velocity     = d;
+        velocity    /= dt;
+        acceleration = 0;
+      }
+    else
+      {
+        if (control.time_integrator == parameters::TimeIntegrator::newmark)
+          {
+            // a1 = 4 / dt^2 (d - dt v0) - a0
+            Vector<double> a1(d);
+            a1.add(-dt, velocity);
+            a1 *= 4. / (dt * dt);
+            a1 -= acceleration;
+            acceleration = a1;
+          }
+        velocity *= -1.;
+        velocity.add(2. / dt, d);
+      }
+
+    // Strain energy, exact for the linear increment:
+    // W += d . (f_int + K d / 2).
+    Vector<double> Kd(d.size());
+    stiffness_matrix.vmult(Kd, d);
+    stored_strain_energy += d * internal_force + 0.5 * (d * Kd);
+
+    // Objective update: first turn the state of the step's start by the
+    // increment's rotation, then add the increment's stress.
+    if (control.rotate_with_spin)
+      rotate_with_spin(d);
+    internal_force += Kd;
+
+    // Stresses, per quadrature point: sigma += C eps(d).
+    const unsigned int n_dofs = fe->n_dofs_per_cell();
+    const unsigned int n_q    = element_cache.n_quadrature_points();
+    const auto &C = element_cache.get_elasticity();
+    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+      {
+        const unsigned int c    = cell->active_cell_index();
+        const auto        &data = element_cache[c];
+        const auto        *dofs = &cell_dof_indices[c * n_dofs];
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            SymmetricTensor<2, dim> eps;
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              eps += d[dofs[i]] * data.strain[q * n_dofs + i];
+            stress[c][q] += C[cell->material_id()] * eps;
+          }
+      }
+
+    if (control.analysis_type == parameters::AnalysisType::static_analysis)
+      {
+        // DDA statics: every step starts at rest (thesis 3.7).
+        velocity     = 0;
+        acceleration = 0;
+      }
+
+    displacement += d;
+    move_mesh(d);
+    time += dt;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::rotate_with_spin(const Vector<double> &d)
+  {
+    // The small-rotation update moves points along straight lines: a
+    // spinning block would not turn its velocity. As DDA does with its
+    // block rotation, turn each node's velocity (and acceleration and
+    // internal force) by the local rotation of the increment, and each
+    // cell's stress by the cell's rotation (Jaumann-like). See
+    // doc/theory.md.
+    const unsigned int  n_dofs = fe->n_dofs_per_cell();
+    const unsigned int  n_q    = element_cache.n_quadrature_points();
+    std::vector<double> node_spin(node_dofs.size()),
+      node_weight(node_dofs.size());
+    for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
+      {
+        const auto &data = element_cache[c];
+        const auto *dofs = &cell_dof_indices[c * n_dofs];
+        double      omega = 0, area = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              omega += d[dofs[i]] * data.spin[q * n_dofs + i] * data.weight[q];
+            area += data.weight[q];
+          }
+        omega /= area;
+        if (omega != 0.)
+          {
+            // sigma <- R sigma R^T
+            const double cs = std::cos(omega), sn = std::sin(omega);
+            for (auto &sigma : stress[c])
+              {
+                const double xx = sigma[0][0], yy = sigma[1][1],
+                             xy = sigma[0][1];
+                sigma[0][0] = cs * cs * xx - 2 * cs * sn * xy + sn * sn * yy;
+                sigma[1][1] = sn * sn * xx + 2 * cs * sn * xy + cs * cs * yy;
+                sigma[0][1] = cs * sn * (xx - yy) + (cs * cs - sn * sn) * xy;
+              }
+          }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          if (local_component[i] == 0)
+            {
+              node_spin[dof_to_node[dofs[i]]] += omega * area;
+              node_weight[dof_to_node[dofs[i]]] += area;
+            }
+      }
+    for (unsigned int n = 0; n < node_dofs.size(); ++n)
+      {
+        const double omega = node_spin[n] / node_weight[n];
+        if (omega == 0.)
+          continue;
+        const double cs = std::cos(omega), sn = std::sin(omega);
+        const auto [i, j] = node_dofs[n];
+        rotate_pair(velocity, i, j, cs, sn);
+        rotate_pair(acceleration, i, j, cs, sn);
+        rotate_pair(internal_force, i, j, cs, sn);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::move_mesh(const Vector<double> &d)
+  {
+    std::vector<Tensor<1, dim>> vertex_increment(vertex_dofs.size());
+    for (unsigned int v = 0; v < vertex_dofs.size(); ++v)
+      for (unsigned int c = 0; c < dim; ++c)
+        vertex_increment[v][c] = d[vertex_dofs[v][c]];
+    mesh.move_vertices(vertex_increment);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Simulator<dim>::mean_cell_stress(const unsigned int cell) const
+  {
+    const auto             &data = element_cache[cell];
+    SymmetricTensor<2, dim> mean;
+    double                  area = 0;
+    for (unsigned int q = 0; q < stress[cell].size(); ++q)
+      {
+        mean += data.weight[q] * stress[cell][q];
+        area += data.weight[q];
+      }
+    return mean / area;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::kinetic_energy() const
+  {
+    return 0.5 * mass_matrix.matrix_norm_square(velocity);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_measure_points()
+  {
+    for (unsigned int m = 0; m < measure_points.size(); ++m)
+      {
+        const auto   &e = measure_points[m];
+        MeasureSample sample;
+        sample.time = time;
+        for (unsigned int i = 0; i < e.dofs.size(); ++i)
+          {
+            sample.displacement[e.component[i]] +=
+              e.shape_values[i] * displacement[e.dofs[i]];
+            sample.velocity[e.component[i]] +=
+              e.shape_values[i] * velocity[e.dofs[i]];
+          }
+        sample.stress = mean_cell_stress(e.cell);
+        measure_histories[m].push_back(sample);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::do_time_step()
+  {
+    if (!is_set_up)
+      setup();
+    Timer wall;
+    if (step_number == 0)
+      {
+        build_element_matrices(false);
+        if (parameters.control.analysis_type ==
+              parameters::AnalysisType::dynamic_analysis &&
+            parameters.control.time_integrator ==
+              parameters::TimeIntegrator::newmark)
+          compute_initial_acceleration();
+        if (measure_histories.size() > 0 && measure_histories[0].empty())
+          record_measure_points();
+        time_step = parameters.control.time_step;
+      }
+    else
+      build_element_matrices(true);
+
+    // The last step ends exactly at the end time; a remainder within
+    // round-off of the step size keeps the step size (and factorization).
+    const double remaining = parameters.control.end_time - time;
+    double       dt =
+      remaining < time_step * (1. - 1e-9) ? remaining : time_step;
+    unsigned int cuts      = 0;
+    while (!try_time_step(dt))
+      {
+        ++cuts;
+        AssertThrow(cuts <= parameters.control.max_step_cuts,
+                    ExcMessage(
+                      "Step " + std::to_string(step_number + 1) + " at t = " +
+                      Utilities::to_string(time) +
+                      ": the largest displacement increment " +
+                      Utilities::to_string(max_increment) +
+                      " m still exceeds Control/Maximum displacement ratio " +
+                      Utilities::to_string(
+                        parameters.control.max_displacement_ratio) +
+                      " of half the scene height after " +
+                      std::to_string(cuts - 1) +
+                      " cuts. Increase the ratio or 'Maximum step cuts', "
+                      "or reduce the time step."));
+        dt *= 0.5;
+      }
+    step_cuts += cuts;
+    ++step_number;
+    last_dt = dt;
+    // After a cut, grow back towards the nominal step.
+    time_step = std::min(2. * dt, parameters.control.time_step);
+    record_measure_points();
+    last_step_time = wall.wall_time();
+
+    statistics.add_value("Time step number", step_number);
+    statistics.add_value("Time (s)", time);
+    statistics.add_value("Time step size (s)", dt);
+    statistics.add_value("Step cuts", cuts);
+    statistics.add_value("Solver iterations", last_solver_iterations);
+    statistics.add_value("Matrix builds", n_matrix_rebuilds);
+    statistics.add_value("Kinetic energy (J)", kinetic_energy());
+    statistics.add_value("Strain energy (J)", strain_energy());
+    statistics.add_value("Max increment (m)", max_increment);
+    statistics.add_value("Wall time per step (s)", last_step_time);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::output_results()
+  {
+    TimerOutput::Scope scope(timer, "output");
+    const auto        &out_parameters = parameters.output;
+    const unsigned int n_cells = mesh.get_triangulation().n_active_cells();
+    Vector<double>     sxx(n_cells), syy(n_cells), sxy(n_cells), s1(n_cells),
+      s2(n_cells), block(n_cells), material(n_cells);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const unsigned int c = cell->active_cell_index();
+        const auto         s = mean_cell_stress(c);
+        sxx[c]               = s[0][0];
+        syy[c]               = s[1][1];
+        sxy[c]               = s[0][1];
+        const double mean = 0.5 * (s[0][0] + s[1][1]);
+        const double r    = std::sqrt(0.25 * (s[0][0] - s[1][1]) *
+                                     (s[0][0] - s[1][1]) +
+                                   s[0][1] * s[0][1]);
+        s1[c]       = mean + r;
+        s2[c]       = mean - r;
+        block[c]    = mesh.block_of_cell(c);
+        material[c] = cell->material_id();
+      }
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_kind(dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(displacement,
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             vector_kind);
+    data_out.add_data_vector(velocity,
+                             std::vector<std::string>(dim, "velocity"),
+                             DataOut<dim>::type_dof_data,
+                             vector_kind);
+    data_out.add_data_vector(sxx, "stress_xx", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(syy, "stress_yy", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(sxy, "stress_xy", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(s1,
+                             "principal_stress_1",
+                             DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(s2,
+                             "principal_stress_2",
+                             DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(block, "block_id", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(material,
+                             "material_id",
+                             DataOut<dim>::type_cell_data);
+    data_out.build_patches(mapping, parameters.control.element_degree);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
+
+    const std::string number = Utilities::int_to_string(output_number, 5);
+    if (out_parameters.write_vtu)
+      {
+        const std::string name = "solution-" + number + ".vtu";
+        std::ofstream     vtu(out_parameters.directory + name);
+        data_out.write_vtu(vtu);
+        pvd_records.emplace_back(time, name);
+        std::ofstream pvd(out_parameters.directory + "solution.pvd");
+        DataOutBase::write_pvd_record(pvd, pvd_records);
+      }
+    if (out_parameters.write_hdf5)
+      {
+        const std::string name = "solution-" + number + ".h5";
+        DataOutBase::DataOutFilter filter(
+          DataOutBase::DataOutFilterFlags(true, true));
+        data_out.write_filtered_data(filter);
+        data_out.write_hdf5_parallel(filter,
+                                     out_parameters.directory + name,
+                                     MPI_COMM_SELF);
+        xdmf_entries.push_back(
+          data_out.create_xdmf_entry(filter, name, time, MPI_COMM_SELF));
+        data_out.write_xdmf_file(xdmf_entries,
+                                 out_parameters.directory + "solution.xdmf",
+                                 MPI_COMM_SELF);
+      }
+    ++output_number;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_statistics() const
+  {
+    std::ofstream out(parameters.output.directory + "statistics");
+    statistics.write_text(out, TableHandler::table_with_separate_column_description);
+
+    std::ofstream history(parameters.output.directory + "measure_points.txt");
+    history << "# time";
+    for (unsigned int m = 0; m < measure_points.size(); ++m)
+      {
+        const auto &p = parameters.output.measure_points[m];
+        history << "  [point " << m << " at " << p[0] << " " << p[1]
+                << ": u_x u_y v_x v_y sigma_xx sigma_yy sigma_xy]";
+      }
+    history << '\n' << std::setprecision(10);
+    if (!measure_histories.empty())
+      for (unsigned int s = 0; s < measure_histories[0].size(); ++s)
+        {
+          history << measure_histories[0][s].time;
+          for (const auto &h : measure_histories)
+            history << ' ' << h[s].displacement << ' ' << h[s].velocity << ' '
+                    << h[s].stress[0][0] << ' ' << h[s].stress[1][1] << ' '
+                    << h[s].stress[0][1];
+          history << '\n';
+        }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    if (!is_set_up)
+      setup();
+
+    // Everything is checked: only now is anything written.
+    const std::string &directory = parameters.output.directory;
+    std::filesystem::create_directories(directory);
+    log_file.open(directory + "log.txt");
+    tee_buffer = std::make_unique<TeeBuffer>(std::cout.rdbuf(),
+                                             log_file.rdbuf());
+    console.rdbuf(tee_buffer.get());
+    if (parameters_from_file)
+      {
+        std::ofstream used(directory + "parameters.prm");
+        prm.print_parameters(used, ParameterHandler::PRM);
+      }
+
+    pcout << "ndda: scene '" << parameters.scene_name << "'\n"
+          << "  blocks: " << mesh.n_blocks()
+          << ", cells: " << mesh.get_triangulation().n_active_cells()
+          << ", vertices: " << mesh.get_triangulation().n_vertices()
+          << ", degrees of freedom: " << dof_handler.n_dofs() << " (P"
+          << parameters.control.element_degree << ")\n"
+          << "  constrained nodes: " << node_constraints.size()
+          << ", output: " << directory << std::endl;
+
+    Timer        wall;
+    double       last_progress = 0;
+    const double end_time      = parameters.control.end_time;
+    const double interval      = parameters.output.interval;
+    output_results();
+    next_output_time = interval;
+    while (time < end_time * (1. - 1e-12))
+      {
+        do_time_step();
+        if (time >= next_output_time * (1. - 1e-12) ||
+            time >= end_time * (1. - 1e-12))
+          {
+            output_results();
+            while (next_output_time <= time * (1. + 1e-12))
+              next_output_time += (interval > 0 ? interval : 1e-300);
+          }
+        if (wall.wall_time() - last_progress >=
+              parameters.output.progress_interval ||
+            time >= end_time * (1. - 1e-12))
+          {
+            last_progress     = wall.wall_time();
+            const double rate = time / std::max(wall.wall_time(), 1e-9);
+            pcout << "  step " << std::setw(7) << step_number
+                  << "  t = " << std::setw(12) << std::setprecision(6)
+                  << time << " s  dt = " << std::setw(10)
+                  << last_dt << " s"
+                  << "  cuts " << step_cuts << "  ETA "
+                  << std::setprecision(3)
+                  << (end_time - time) / std::max(rate, 1e-300) << " s"
+                  << std::endl;
+            write_statistics();
+          }
+      }
+    write_statistics();
+    pcout << "  done: " << step_number << " steps, " << step_cuts
+          << " step cuts, " << n_matrix_rebuilds << " matrix builds, "
+          << linear_solver->n_factorizations() << " factorizations, "
+          << wall.wall_time() << " s wall time" << std::endl;
+    timer.print_summary();
+    console.flush();
+    console.rdbuf(std::cout.rdbuf());
+  }
+
+
+
+  template class Simulator<2>;
+} // namespace ndda

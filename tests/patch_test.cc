@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Patch test: a linear displacement field prescribed on the boundary of an
+// unstructured mesh must be reproduced exactly inside, and the stress must
+// be the same constant C : eps in every cell, for P1 and P2.
+
+#include "tests.h"
+
+using namespace ndda_tests;
+
+const std::string scene = R"(
+subsection Control
+  set Analysis type = quasi-static
+  set Time step = 1
+  set End time = 1
+  set Element degree = {degree}
+  set Maximum displacement ratio = 1
+end
+subsection Materials
+  set Names = rock
+  set Plane condition = {plane}
+  subsection rock
+    set Young's modulus = 30e9
+    set Poisson's ratio = 0.3
+  end
+end
+subsection Geometry
+  set Blocks = patch
+  subsection patch
+    set Outer boundary = 0, 0; 1, 0; 1.2, 0.9; 0.1, 1.1
+    set Material = rock
+    set Mesh size = 0.25
+  end
+end
+subsection Boundary conditions
+  set Names = linear
+  subsection linear
+    set Type = displacement
+    set Segments = 0, 0, 1, 0; 1, 0, 1.2, 0.9; 1.2, 0.9, 0.1, 1.1; 0.1, 1.1, 0, 0
+    set Value = 1e-3 + 1e-3*x + 2e-3*y; -2e-3 - 0.5e-3*x + 3e-3*y
+  end
+end
+)";
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  for (const std::string plane : {"plane stress", "plane strain"})
+    for (const unsigned int degree : {1u, 2u})
+      {
+        auto parameters = read_parameters(
+          substitute(scene,
+                     {{"degree", std::to_string(degree)}, {"plane", plane}}),
+          "patch_test");
+        ndda::Simulator<2> simulator(parameters);
+        simulator.setup();
+        // Initial positions of the nodes, before the mesh moves.
+        std::vector<Point<2>> support(simulator.get_dof_handler().n_dofs());
+        DoFTools::map_dofs_to_support_points(simulator.get_mapping(),
+                                             simulator.get_dof_handler(),
+                                             support);
+        simulator.do_time_step();
+
+        // Exact fields.
+        const double eps_xx = 1e-3, eps_yy = 3e-3, eps_xy = 0.5 * (2e-3 - 0.5e-3);
+        double       max_u_error = 0, max_u = 0;
+        const auto  &fe          = simulator.get_dof_handler().get_fe();
+        std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+        for (const auto &cell :
+             simulator.get_dof_handler().active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              {
+                const Point<2> &x = support[dofs[i]];
+                const double    exact =
+                  fe.system_to_component_index(i).first == 0 ?
+                       1e-3 + 1e-3 * x[0] + 2e-3 * x[1] :
+                       -2e-3 - 0.5e-3 * x[0] + 3e-3 * x[1];
+                max_u_error = std::max(max_u_error,
+                                       std::abs(simulator.get_displacement()
+                                                  [dofs[i]] -
+                                                exact));
+                max_u = std::max(max_u, std::abs(exact));
+              }
+          }
+        const double E = 30e9, nu = 0.3;
+        const double lambda =
+          plane == "plane strain" ? E * nu / ((1 + nu) * (1 - 2 * nu)) :
+                                    E * nu / (1 - nu * nu);
+        const double mu = E / (2 * (1 + nu));
+        SymmetricTensor<2, 2> exact_stress;
+        exact_stress[0][0] = lambda * (eps_xx + eps_yy) + 2 * mu * eps_xx;
+        exact_stress[1][1] = lambda * (eps_xx + eps_yy) + 2 * mu * eps_yy;
+        exact_stress[0][1] = 2 * mu * eps_xy;
+        double max_stress_error = 0;
+        for (unsigned int c = 0;
+             c < simulator.get_mesh().get_triangulation().n_active_cells();
+             ++c)
+          for (const auto &sigma : simulator.get_cell_stress(c))
+            max_stress_error =
+              std::max(max_stress_error, (sigma - exact_stress).norm());
+        const double u_error      = max_u_error / max_u;
+        const double stress_error = max_stress_error / exact_stress.norm();
+        std::cout << plane << ", P" << degree << ": "
+                  << simulator.get_mesh().get_triangulation().n_active_cells()
+                  << " cells, relative displacement error " << std::scientific
+                  << std::setprecision(2) << u_error
+                  << ", relative stress error " << stress_error
+                  << std::defaultfloat << std::endl;
+        check(u_error < 1e-11, "displacement not reproduced to round-off");
+        check(stress_error < 1e-11, "stress not reproduced to round-off");
+      }
+  std::cout << "OK" << std::endl;
+}

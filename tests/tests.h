@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Small helpers shared by the test programs.
+#ifndef ndda_tests_h
+#define ndda_tests_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <ndda/parameters/parameters.h>
+#include <ndda/simulator.h>
+
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace ndda_tests
+{
+  /** Replace every "{key}" in @p text by its value. */
+  inline std::string
+  substitute(std::string                               text,
+             const std::map<std::string, std::string> &values)
+  {
+    for (const auto &[key, value] : values)
+      {
+        const std::string pattern = "{" + key + "}";
+        for (auto pos = text.find(pattern); pos != std::string::npos;
+             pos      = text.find(pattern))
+          text.replace(pos, pattern.size(), value);
+      }
+    return text;
+  }
+
+  /** Parameters from the text of a .prm file. */
+  inline ndda::parameters::Parameters
+  read_parameters(const std::string &text, const std::string &name)
+  {
+    dealii::ParameterHandler     prm;
+    ndda::parameters::Parameters parameters;
+    parameters.read(text, name + ".prm", prm);
+    return parameters;
+  }
+
+  /** Fail the test with a message if @p condition is false. */
+  inline void
+  check(const bool condition, const std::string &what)
+  {
+    if (!condition)
+      {
+        std::cout << "FAILED: " << what << std::endl;
+        std::exit(1);
+      }
+  }
+} // namespace ndda_tests
+
+#endif
