@@ -1510,8 +1510,9 @@ namespace ndda
             time >= end_time * (1. - 1e-12))
           {
             output_results();
-            while (next_output_time <= time * (1. + 1e-12))
-              next_output_time += (interval > 0 ? interval : 1e-300);
+            if (interval > 0)
+              while (next_output_time <= time * (1. + 1e-12))
+                next_output_time += interval;
           }
         if (wall.wall_time() - last_progress >=
               parameters.output.progress_interval ||

@@ -89,6 +89,13 @@ namespace ndda
         d.weight.resize(n_q_points);
         d.viscosity_over_density =
           material.density > 0 ? material.viscosity / material.density : 0.;
+        double area = 0;
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          area += fe_values.JxW(q);
+        if (d.initial_area == 0)
+          d.initial_area = area;
+        // Mass is conserved: the current density is rho_0 A_0 / A.
+        const double density = material.density * d.initial_area / area;
 
         for (unsigned int q = 0; q < n_q_points; ++q)
           {
@@ -109,7 +116,7 @@ namespace ndda
                   {
                     d.stiffness(i, j) +=
                       (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
-                    d.mass(i, j) += material.density *
+                    d.mass(i, j) += density *
                                     (phi_i * fe_values[u].value(j, q)) *
                                     d.weight[q];
                   }

@@ -40,7 +40,7 @@ namespace ndda
    *
    * - stiffness: t * int B^T C B (thesis 3.24),
    * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
-   *   time-step factor),
+   *   time-step factor), with rho scaled to keep the cell's initial mass,
    * - at every quadrature point, the strain and the spin of each shape
    *   function and t * JxW, so that stress updates, internal forces and
    *   local rotations need no FEValues in the time loop.
@@ -66,6 +66,9 @@ namespace ndda
       /// Vertex positions when the data were computed.
       std::vector<Point<dim>> vertices;
       double                  diameter = 0;
+      /// Area at the first computation: the density is scaled by
+      /// initial_area / area so that the mass of a cell never changes.
+      double initial_area = 0;
     };
 
     /**
