@@ -101,7 +101,9 @@ main(int argc, char **argv)
       // file and line decoration.
       std::ostringstream info;
       exc.print_info(info);
-      std::cerr << "\nndda: error: " << info.str() << std::endl;
+      std::string message = info.str();
+      message.erase(0, message.find_first_not_of(" \n\t"));
+      std::cerr << "\nndda: error: " << message << std::endl;
       return 1;
     }
   catch (const std::exception &exc)

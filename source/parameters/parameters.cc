@@ -158,11 +158,22 @@ namespace ndda
 
       /** The text of ParameterHandler's exception, without the stack. */
       std::string
-      message_of(const ExceptionBase &exc)
+      message_of(const ExceptionBase &exc, const std::string &filename = "")
       {
         std::ostringstream out;
         exc.print_info(out);
         std::string text = out.str();
+        // ParameterHandler reads from a string here: "Line <3> of file
+        // <input string>: ..." becomes "line 3: ...".
+        if (!filename.empty())
+          for (const auto &[from, to] :
+               std::vector<std::pair<std::string, std::string>>{
+                 {"> of file <input string>", ""},
+                 {"> of file <input string", ":"},
+                 {"Line <", "line "}})
+            for (auto pos = text.find(from); pos != std::string::npos;
+                 pos      = text.find(from))
+              text.replace(pos, from.size(), to);
         // Collapse deal.II's line breaks and indentation.
         std::string result;
         bool        space = false;
@@ -1077,7 +1088,7 @@ namespace ndda
           {
             AssertThrow(false,
                         ExcMessage("Error in '" + filename +
-                                   "': " + message_of(exc)));
+                                   "': " + message_of(exc, filename)));
           }
         const auto get = [&](const std::string &section,
                              const std::string &entry) {
@@ -1124,7 +1135,7 @@ namespace ndda
         {
           AssertThrow(false,
                       ExcMessage("Error in '" + filename +
-                                 "': " + message_of(exc) +
+                                 "': " + message_of(exc, filename) +
                                  " Run 'ndda --print-parameters' for all "
                                  "entries and their allowed values; names "
                                  "of blocks, materials, loads and "
