@@ -166,6 +166,10 @@ namespace ndda
       }
     else
       {
+        AssertThrow(!geometry.blocks.empty() || !geometry.regions.empty(),
+                    ExcMessage("Geometry: the scene has no blocks. Give "
+                               "'set Blocks = name' with a subsection "
+                               "'name', or Regions, or a Mesh file."));
         geometry::SceneGeometry scene;
         scene.blocks    = geometry.blocks;
         scene.regions   = geometry.regions;
@@ -696,6 +700,19 @@ namespace ndda
 
 
   template <int dim>
+  std::pair<std::array<Point<dim>, 2>, Tensor<1, dim>>
+  Simulator<dim>::bolt_geometry(const Bolt &bolt) const
+  {
+    std::array<Point<dim>, 2> x = {{bolt.first, bolt.second}};
+    for (unsigned int e = 0; e < 2; ++e)
+      for (unsigned int d = 0; d < dim; ++d)
+        x[e][d] += displacement[bolt.dofs[dim * e + d]];
+    return {x, (x[0] - x[1]) / x[0].distance(x[1])};
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::assemble_global_matrices()
   {
@@ -729,12 +746,7 @@ namespace ndda
     // anchors on the current geometry.
     for (const auto &bolt : bolts)
       {
-        Point<dim> x[2];
-        for (unsigned int e = 0; e < 2; ++e)
-          for (unsigned int d = 0; d < dim; ++d)
-            x[e][d] = (e == 0 ? bolt.first : bolt.second)[d] +
-                      displacement[bolt.dofs[2 * e + d]];
-        const Tensor<1, dim> l = (x[0] - x[1]) / x[0].distance(x[1]);
+        const Tensor<1, dim> l = bolt_geometry(bolt).second;
         for (unsigned int a = 0; a < 2; ++a)
           for (unsigned int b = 0; b < 2; ++b)
             for (unsigned int i = 0; i < dim; ++i)
@@ -766,6 +778,16 @@ namespace ndda
           for (unsigned int i = 0; i < n_dofs; ++i)
             internal_force[dofs[i]] +=
               (data.strain[q * n_dofs + i] * stress[c][q]) * data.weight[q];
+      }
+    // Bolts pull their anchors towards each other with their spring force.
+    for (const auto &bolt : bolts)
+      {
+        const Tensor<1, dim> l = bolt_geometry(bolt).second;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            internal_force[bolt.dofs[d]] += bolt.axial_force * l[d];
+            internal_force[bolt.dofs[dim + d]] -= bolt.axial_force * l[d];
+          }
       }
   }
 
@@ -822,12 +844,7 @@ namespace ndda
     for (const auto &bolt : bolts)
       if (bolt.pretension != 0.)
         {
-          Point<dim> x[2];
-          for (unsigned int e = 0; e < 2; ++e)
-            for (unsigned int d = 0; d < dim; ++d)
-              x[e][d] = (e == 0 ? bolt.first : bolt.second)[d] +
-                        displacement[bolt.dofs[2 * e + d]];
-          const Tensor<1, dim> l = (x[0] - x[1]) / x[0].distance(x[1]);
+          const Tensor<1, dim> l = bolt_geometry(bolt).second;
           for (unsigned int d = 0; d < dim; ++d)
             {
               force[bolt.dofs[d]] -= bolt.pretension * l[d];
@@ -1153,6 +1170,16 @@ namespace ndda
         // DDA statics: every step starts at rest (thesis 3.7).
         velocity     = 0;
         acceleration = 0;
+      }
+
+    for (auto &bolt : bolts)
+      {
+        const Tensor<1, dim> l          = bolt_geometry(bolt).second;
+        double               elongation = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          elongation +=
+            l[c] * (d[bolt.dofs[c]] - d[bolt.dofs[dim + c]]);
+        bolt.axial_force += bolt.stiffness * elongation;
       }
 
     displacement += d;
@@ -1526,7 +1553,8 @@ namespace ndda
                   << last_dt << " s"
                   << "  cuts " << step_cuts << "  ETA "
                   << std::setprecision(3)
-                  << (end_time - time) / std::max(rate, 1e-300) << " s"
+                  << std::max(0., (end_time - time) / std::max(rate, 1e-300))
+                  << " s"
                   << std::endl;
             write_statistics();
           }

@@ -257,7 +257,14 @@ namespace ndda
       Point<dim>                             first, second;
       double                                 stiffness;
       double                                 pretension;
+      /// Spring force k * elongation, accumulated (N, tension positive).
+      double axial_force = 0;
     };
+
+    /** Current positions of a bolt's anchors and the unit vector from the
+     * second to the first. */
+    std::pair<std::array<Point<dim>, 2>, Tensor<1, dim>>
+    bolt_geometry(const Bolt &bolt) const;
 
     void
     make_mesh(const Triangulation<dim> *triangulation);

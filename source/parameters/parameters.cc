@@ -677,12 +677,6 @@ namespace ndda
                 static_cast<unsigned int>(tag), pair[1]);
             }
         }
-      else
-        AssertThrow(!block_names.empty() || !region_names.empty(),
-                    ExcMessage("Geometry: the scene has no blocks. Give "
-                               "'set Blocks = name' with a subsection "
-                               "'name', or Regions, or a Mesh file."));
-
       blocks.clear();
       block_states.clear();
       for (const auto &name : block_names)
