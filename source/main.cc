@@ -36,7 +36,7 @@ namespace
   {
     // Declare with one example name in every name list, so that every kind
     // of subsection is documented.
-    dealii::ParameterHandler                 prm;
+    dealii::ParameterHandler                prm;
     ndda::parameters::Parameters::NameLists names;
     names.blocks              = {"<block name>"};
     names.regions             = {"<region name>"};
@@ -79,8 +79,9 @@ main(int argc, char **argv)
             }
           ndda::Simulator<2> simulator(args[1]);
           simulator.setup();
-          std::cout << "ndda: '" << args[1] << "' is valid: "
-                    << simulator.get_mesh().n_blocks() << " blocks, "
+          std::cout << "ndda: '" << args[1]
+                    << "' is valid: " << simulator.get_mesh().n_blocks()
+                    << " blocks, "
                     << simulator.get_mesh().get_triangulation().n_active_cells()
                     << " cells, " << simulator.get_dof_handler().n_dofs()
                     << " degrees of freedom.\n";

@@ -64,8 +64,7 @@ namespace ndda
     distance_to_segment(const Point<2> &p, const geometry::Segment &s)
     {
       const Tensor<1, 2> ab = s.b - s.a;
-      const double       t =
-        std::clamp(((p - s.a) * ab) / ab.norm_square(), 0., 1.);
+      const double t = std::clamp(((p - s.a) * ab) / ab.norm_square(), 0., 1.);
       return p.distance(s.a + t * ab);
     }
 
@@ -91,8 +90,8 @@ namespace ndda
                 const double                  s)
     {
       const double x = v[i], y = v[j];
-      v[i]           = c * x - s * y;
-      v[j]           = s * x + c * y;
+      v[i] = c * x - s * y;
+      v[j] = s * x + c * y;
     }
   } // namespace
 
@@ -204,12 +203,11 @@ namespace ndda
       }
     for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
       AssertThrow(cell->material_id() < parameters.materials.materials.size(),
-                  ExcMessage("Mesh: a cell has material id " +
-                             std::to_string(cell->material_id()) +
-                             ", but only " +
-                             std::to_string(
-                               parameters.materials.materials.size()) +
-                             " materials are declared in Materials/Names."));
+                  ExcMessage(
+                    "Mesh: a cell has material id " +
+                    std::to_string(cell->material_id()) + ", but only " +
+                    std::to_string(parameters.materials.materials.size()) +
+                    " materials are declared in Materials/Names."));
   }
 
 
@@ -234,24 +232,22 @@ namespace ndda
     stress.assign(mesh.get_triangulation().n_active_cells(),
                   std::vector<SymmetricTensor<2, dim>>(n_q));
     std::vector<parameters::InitialState> block_state(mesh.n_blocks());
-    const auto &names = mesh.get_block_names();
+    const auto                           &names = mesh.get_block_names();
     for (unsigned int b = 0; b < names.size(); ++b)
       {
         for (unsigned int i = 0; i < parameters.geometry.blocks.size(); ++i)
           if (parameters.geometry.blocks[i].name == names[b])
             block_state[b] = parameters.geometry.block_states[i];
         for (unsigned int i = 0; i < parameters.geometry.regions.size(); ++i)
-          if (names[b].rfind(parameters.geometry.regions[i].name + ".", 0) ==
-              0)
+          if (names[b].rfind(parameters.geometry.regions[i].name + ".", 0) == 0)
             block_state[b] = parameters.geometry.region_states[i];
       }
     std::vector<std::unique_ptr<FunctionParser<dim>>> initial_velocity;
     for (const auto &state : block_state)
       initial_velocity.push_back(make_function(state.velocity, dim, false));
 
-    const auto &fe_ref = *fe;
-    const auto  support =
-      fe_ref.base_element(0).get_unit_support_points();
+    const auto &fe_ref  = *fe;
+    const auto  support = fe_ref.base_element(0).get_unit_support_points();
     std::vector<types::global_dof_index> dofs(fe_ref.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -267,8 +263,8 @@ namespace ndda
         for (unsigned int i = 0; i < dofs.size(); ++i)
           {
             const auto [component, base] = fe_ref.system_to_component_index(i);
-            const Point<dim> x = mapping.transform_unit_to_real_cell(
-              cell, support[base]);
+            const Point<dim> x =
+              mapping.transform_unit_to_real_cell(cell, support[base]);
             velocity[dofs[i]] = initial_velocity[b]->value(x, component);
           }
       }
@@ -284,8 +280,8 @@ namespace ndda
   Simulator<dim>::setup_dofs()
   {
     const unsigned int degree = parameters.control.element_degree;
-    fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
-    quadrature      = std::make_unique<QGaussSimplex<dim>>(degree + 1);
+    fe         = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
+    quadrature = std::make_unique<QGaussSimplex<dim>>(degree + 1);
     face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
     dof_handler.distribute_dofs(*fe);
 
@@ -333,12 +329,8 @@ namespace ndda
     for (unsigned int d = 0; d < dim; ++d)
       gravity_load[d].reinit(n);
 
-    element_cache.update(dof_handler,
-                         mapping,
-                         *quadrature,
-                         parameters.materials,
-                         false,
-                         0.);
+    element_cache.update(
+      dof_handler, mapping, *quadrature, parameters.materials, false, 0.);
     double max_modulus = 0;
     for (const auto &m : parameters.materials.materials)
       max_modulus = std::max(max_modulus, m.youngs_modulus);
@@ -360,7 +352,7 @@ namespace ndda
     const auto   box      = mesh.bounding_box();
     const double tolerance =
       1e-8 * std::max(1., box.first.distance(box.second));
-    unsigned int best = numbers::invalid_unsigned_int;
+    unsigned int best          = numbers::invalid_unsigned_int;
     double       best_distance = tolerance;
     for (unsigned int v = 0; v < vertices.size(); ++v)
       if (vertices[v].distance(p) <= best_distance)
@@ -371,9 +363,7 @@ namespace ndda
     if (best == numbers::invalid_unsigned_int)
       {
         // Outside, or inside but not a vertex (possible for imported meshes).
-        const auto found = GridTools::find_active_cell_around_point(
-          mapping, mesh.get_triangulation(), p);
-        AssertThrow(found.first.state() == IteratorState::valid,
+        AssertThrow(mesh.locate(p).first != numbers::invalid_unsigned_int,
                     ExcMessage(entry + ": the point " + to_string(p) +
                                " lies outside every block. Move it into "
                                "or onto a block."));
@@ -419,8 +409,7 @@ namespace ndda
 
     // Boundary nodes, for constraints on segments.
     std::vector<bool> on_boundary(dof_handler.n_dofs(), false);
-    std::vector<types::global_dof_index> face_dofs(
-      fe_ref.n_dofs_per_face());
+    std::vector<types::global_dof_index> face_dofs(fe_ref.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (unsigned int f = 0; f < cell->n_faces(); ++f)
         if (cell->at_boundary(f))
@@ -439,15 +428,16 @@ namespace ndda
     std::vector<bool> constrained(dof_handler.n_dofs(), false);
     for (const auto &bc : parameters.boundary_conditions.conditions)
       {
-        const std::string where = "Boundary conditions/" + bc.name;
+        const std::string where    = "Boundary conditions/" + bc.name;
         unsigned int      function = numbers::invalid_unsigned_int;
         if (bc.type != parameters::ConstraintType::fixed)
           {
             function = constraint_functions.size();
-            constraint_functions.push_back(make_function(
-              bc.value,
-              bc.type == parameters::ConstraintType::roller ? 1 : dim,
-              true));
+            constraint_functions.push_back(
+              make_function(bc.value,
+                            bc.type == parameters::ConstraintType::roller ? 1 :
+                                                                            dim,
+                            true));
           }
         const double   angle = bc.roller_angle * numbers::PI / 180.;
         Tensor<1, dim> normal;
@@ -460,7 +450,8 @@ namespace ndda
             const unsigned int vertex = find_vertex(p, where + "/Points");
             const Point<dim>   x      = mesh.get_block_mesh().vertices[vertex];
             for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-              if (component[i] == 0 && support_points[i].distance(x) <= tolerance)
+              if (component[i] == 0 &&
+                  support_points[i].distance(x) <= tolerance)
                 nodes.push_back(i);
           }
         for (const auto &segment : bc.segments)
@@ -471,8 +462,9 @@ namespace ndda
                   distance_to_segment(support_points[i], segment) <= tolerance)
                 nodes.push_back(i);
             AssertThrow(nodes.size() > before,
-                        ExcMessage(where + "/Segments: no boundary vertex "
-                                           "lies on the segment " +
+                        ExcMessage(where +
+                                   "/Segments: no boundary vertex "
+                                   "lies on the segment " +
                                    to_string(segment.a) + " - " +
                                    to_string(segment.b) +
                                    ". Give a segment along a block's "
@@ -509,10 +501,8 @@ namespace ndda
               // n . u = d: solve for the component with the larger normal
               // entry; the inhomogeneity is handled by the step's
               // prescribed increment (see try_time_step()).
-              const unsigned int k = std::abs(nc.normal[1]) >=
-                                         std::abs(nc.normal[0]) ?
-                                       1 :
-                                       0;
+              const unsigned int k =
+                std::abs(nc.normal[1]) >= std::abs(nc.normal[0]) ? 1 : 0;
               constraints.add_line(nc.dofs[k]);
               constraints.add_entry(nc.dofs[k],
                                     nc.dofs[1 - k],
@@ -536,7 +526,8 @@ namespace ndda
               mesh.get_block_mesh().vertices[find_vertex(ends[e], where)];
             bool found = false;
             for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-              if (component[i] == 0 && support_points[i].distance(x) <= tolerance)
+              if (component[i] == 0 &&
+                  support_points[i].distance(x) <= tolerance)
                 {
                   bolt.dofs[2 * e]     = i;
                   bolt.dofs[2 * e + 1] = partner[i];
@@ -570,19 +561,23 @@ namespace ndda
   Simulator<dim>::make_point_evaluator(const Point<dim>  &p,
                                        const std::string &entry) const
   {
-    const auto found =
-      GridTools::find_active_cell_around_point(mapping, dof_handler, p);
-    AssertThrow(found.first.state() == IteratorState::valid,
+    // deal.II 9.4's find_active_cell_around_point() can return a cell of
+    // another block on meshes of disconnected blocks; locate by
+    // barycentric coordinates instead.
+    const auto [cell_index, unit_point] = mesh.locate(p);
+    AssertThrow(cell_index != numbers::invalid_unsigned_int,
                 ExcMessage(entry + ": the point " + to_string(p) +
                            " lies outside every block. Move it into or onto "
                            "a block."));
     PointEvaluator evaluator;
-    evaluator.cell = found.first->active_cell_index();
-    evaluator.dofs.resize(fe->n_dofs_per_cell());
-    found.first->get_dof_indices(evaluator.dofs);
+    evaluator.cell = cell_index;
+    evaluator.dofs.assign(cell_dof_indices.begin() +
+                            cell_index * fe->n_dofs_per_cell(),
+                          cell_dof_indices.begin() +
+                            (cell_index + 1) * fe->n_dofs_per_cell());
     for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
       {
-        evaluator.shape_values.push_back(fe->shape_value(i, found.second));
+        evaluator.shape_values.push_back(fe->shape_value(i, unit_point));
         evaluator.component.push_back(fe->system_to_component_index(i).first);
       }
     return evaluator;
@@ -673,10 +668,9 @@ namespace ndda
           {
             std::vector<double> w(fe->n_dofs_per_cell());
             for (unsigned int i = 0; i < w.size(); ++i)
-              w[i] = fe_face_values.shape_value_component(i,
-                                                          q,
-                                                          face.component[i]) *
-                     fe_face_values.JxW(q) * parameters.materials.thickness;
+              w[i] =
+                fe_face_values.shape_value_component(i, q, face.component[i]) *
+                fe_face_values.JxW(q) * parameters.materials.thickness;
             face.weighted_shape.push_back(w);
             face.points.push_back(fe_face_values.quadrature_point(q));
             face.normals.push_back(fe_face_values.normal_vector(q));
@@ -716,10 +710,10 @@ namespace ndda
   void
   Simulator<dim>::assemble_global_matrices()
   {
-    stiffness_matrix = 0;
-    mass_matrix      = 0;
-    damping_matrix   = 0;
-    has_damping      = false;
+    stiffness_matrix                            = 0;
+    mass_matrix                                 = 0;
+    damping_matrix                              = 0;
+    has_damping                                 = false;
     const unsigned int                   n_dofs = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n_dofs);
     for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
@@ -767,7 +761,7 @@ namespace ndda
   {
     // f_int = sum over cells of t * int B^T sigma (thesis 3.25 with the
     // accumulated stress in place of the initial stress).
-    internal_force = 0;
+    internal_force            = 0;
     const unsigned int n_dofs = fe->n_dofs_per_cell();
     const unsigned int n_q    = element_cache.n_quadrature_points();
     for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
@@ -875,7 +869,7 @@ namespace ndda
     // Gravity load vectors: M times a unit acceleration.
     for (unsigned int d = 0; d < dim; ++d)
       {
-        Vector<double> unit(dof_handler.n_dofs());
+        Vector<double>                       unit(dof_handler.n_dofs());
         std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
@@ -902,8 +896,7 @@ namespace ndda
     double             c_mass  = 0.;
     if (control.analysis_type != parameters::AnalysisType::quasi_static)
       c_mass =
-        (control.time_integrator == parameters::TimeIntegrator::dda ? 2. :
-                                                                      4.) /
+        (control.time_integrator == parameters::TimeIntegrator::dda ? 2. : 4.) /
         (dt * dt);
     system_matrix.copy_from(stiffness_matrix);
     if (c_mass != 0.)
@@ -1017,7 +1010,8 @@ namespace ndda
             // see setup_constraints().
             const unsigned int k =
               std::abs(nc.normal[1]) >= std::abs(nc.normal[0]) ? 1 : 0;
-            increment[nc.dofs[k]] = (target_increment * nc.normal) / nc.normal[k];
+            increment[nc.dofs[k]] =
+              (target_increment * nc.normal) / nc.normal[k];
           }
         else
           for (unsigned int d = 0; d < dim; ++d)
@@ -1091,12 +1085,11 @@ namespace ndda
     // allowed fraction of half the scene height.
     max_increment = 0;
     for (const auto &dofs : vertex_dofs)
-      max_increment = std::max(max_increment,
-                               d[dofs[0]] * d[dofs[0]] +
-                                 d[dofs[1]] * d[dofs[1]]);
+      max_increment =
+        std::max(max_increment,
+                 d[dofs[0]] * d[dofs[0]] + d[dofs[1]] * d[dofs[1]]);
     max_increment = std::sqrt(max_increment);
-    if (max_increment >
-        control.max_displacement_ratio * scene_half_height)
+    if (max_increment > control.max_displacement_ratio * scene_half_height)
       return false;
 
     update_state(d, dt);
@@ -1116,8 +1109,8 @@ namespace ndda
     // give v1 = 2 d / dt - v0; Newmark also carries the acceleration.
     if (control.analysis_type == parameters::AnalysisType::quasi_static)
       {
-        velocity     = d;
-        velocity    /= dt;
+        velocity = d;
+        velocity /= dt;
         acceleration = 0;
       }
     else
@@ -1150,7 +1143,7 @@ namespace ndda
     // Stresses, per quadrature point: sigma += C eps(d).
     const unsigned int n_dofs = fe->n_dofs_per_cell();
     const unsigned int n_q    = element_cache.n_quadrature_points();
-    const auto &C = element_cache.get_elasticity();
+    const auto        &C      = element_cache.get_elasticity();
     for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
       {
         const unsigned int c    = cell->active_cell_index();
@@ -1177,8 +1170,7 @@ namespace ndda
         const Tensor<1, dim> l          = bolt_geometry(bolt).second;
         double               elongation = 0;
         for (unsigned int c = 0; c < dim; ++c)
-          elongation +=
-            l[c] * (d[bolt.dofs[c]] - d[bolt.dofs[dim + c]]);
+          elongation += l[c] * (d[bolt.dofs[c]] - d[bolt.dofs[dim + c]]);
         bolt.axial_force += bolt.stiffness * elongation;
       }
 
@@ -1205,8 +1197,8 @@ namespace ndda
       node_weight(node_dofs.size());
     for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
       {
-        const auto &data = element_cache[c];
-        const auto *dofs = &cell_dof_indices[c * n_dofs];
+        const auto &data  = element_cache[c];
+        const auto *dofs  = &cell_dof_indices[c * n_dofs];
         double      omega = 0, area = 0;
         for (unsigned int q = 0; q < n_q; ++q)
           {
@@ -1337,25 +1329,23 @@ namespace ndda
     // The last step ends exactly at the end time; a remainder within
     // round-off of the step size keeps the step size (and factorization).
     const double remaining = parameters.control.end_time - time;
-    double       dt =
-      remaining < time_step * (1. - 1e-9) ? remaining : time_step;
-    unsigned int cuts      = 0;
+    double dt = remaining < time_step * (1. - 1e-9) ? remaining : time_step;
+    unsigned int cuts = 0;
     while (!try_time_step(dt))
       {
         ++cuts;
-        AssertThrow(cuts <= parameters.control.max_step_cuts,
-                    ExcMessage(
-                      "Step " + std::to_string(step_number + 1) + " at t = " +
-                      Utilities::to_string(time) +
-                      ": the largest displacement increment " +
-                      Utilities::to_string(max_increment) +
-                      " m still exceeds Control/Maximum displacement ratio " +
-                      Utilities::to_string(
-                        parameters.control.max_displacement_ratio) +
-                      " of half the scene height after " +
-                      std::to_string(cuts - 1) +
-                      " cuts. Increase the ratio or 'Maximum step cuts', "
-                      "or reduce the time step."));
+        AssertThrow(
+          cuts <= parameters.control.max_step_cuts,
+          ExcMessage(
+            "Step " + std::to_string(step_number + 1) +
+            " at t = " + Utilities::to_string(time) +
+            ": the largest displacement increment " +
+            Utilities::to_string(max_increment) +
+            " m still exceeds Control/Maximum displacement ratio " +
+            Utilities::to_string(parameters.control.max_displacement_ratio) +
+            " of half the scene height after " + std::to_string(cuts - 1) +
+            " cuts. Increase the ratio or 'Maximum step cuts', "
+            "or reduce the time step."));
         dt *= 0.5;
       }
     step_cuts += cuts;
@@ -1396,10 +1386,9 @@ namespace ndda
         sxx[c]               = s[0][0];
         syy[c]               = s[1][1];
         sxy[c]               = s[0][1];
-        const double mean = 0.5 * (s[0][0] + s[1][1]);
-        const double r    = std::sqrt(0.25 * (s[0][0] - s[1][1]) *
-                                     (s[0][0] - s[1][1]) +
-                                   s[0][1] * s[0][1]);
+        const double mean    = 0.5 * (s[0][0] + s[1][1]);
+        const double r       = std::sqrt(
+          0.25 * (s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) + s[0][1] * s[0][1]);
         s1[c]       = mean + r;
         s2[c]       = mean - r;
         block[c]    = mesh.block_of_cell(c);
@@ -1408,7 +1397,8 @@ namespace ndda
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_kind(dim, DataComponentInterpretation::component_is_part_of_vector);
+      vector_kind(dim,
+                  DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(displacement,
                              std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data,
@@ -1447,7 +1437,7 @@ namespace ndda
       }
     if (out_parameters.write_hdf5)
       {
-        const std::string name = "solution-" + number + ".h5";
+        const std::string          name = "solution-" + number + ".h5";
         DataOutBase::DataOutFilter filter(
           DataOutBase::DataOutFilterFlags(true, true));
         data_out.write_filtered_data(filter);
@@ -1470,7 +1460,8 @@ namespace ndda
   Simulator<dim>::write_statistics() const
   {
     std::ofstream out(parameters.output.directory + "statistics");
-    statistics.write_text(out, TableHandler::table_with_separate_column_description);
+    statistics.write_text(out,
+                          TableHandler::table_with_separate_column_description);
 
     std::ofstream history(parameters.output.directory + "measure_points.txt");
     history << "# time";
@@ -1506,8 +1497,8 @@ namespace ndda
     const std::string &directory = parameters.output.directory;
     std::filesystem::create_directories(directory);
     log_file.open(directory + "log.txt");
-    tee_buffer = std::make_unique<TeeBuffer>(std::cout.rdbuf(),
-                                             log_file.rdbuf());
+    tee_buffer =
+      std::make_unique<TeeBuffer>(std::cout.rdbuf(), log_file.rdbuf());
     console.rdbuf(tee_buffer.get());
     if (parameters_from_file)
       {
@@ -1548,14 +1539,11 @@ namespace ndda
             last_progress     = wall.wall_time();
             const double rate = time / std::max(wall.wall_time(), 1e-9);
             pcout << "  step " << std::setw(7) << step_number
-                  << "  t = " << std::setw(12) << std::setprecision(6)
-                  << time << " s  dt = " << std::setw(10)
-                  << last_dt << " s"
-                  << "  cuts " << step_cuts << "  ETA "
-                  << std::setprecision(3)
+                  << "  t = " << std::setw(12) << std::setprecision(6) << time
+                  << " s  dt = " << std::setw(10) << last_dt << " s"
+                  << "  cuts " << step_cuts << "  ETA " << std::setprecision(3)
                   << std::max(0., (end_time - time) / std::max(rate, 1e-300))
-                  << " s"
-                  << std::endl;
+                  << " s" << std::endl;
             write_statistics();
           }
       }

@@ -8,9 +8,9 @@
 // is v(0, 0) = P l^3 / (3 E I). Prints the error for P1 and P2 under
 // refinement and checks that it decreases at least at the expected rate.
 
-#include "tests.h"
-
 #include <cmath>
+
+#include "tests.h"
 
 using namespace ndda_tests;
 
@@ -80,18 +80,18 @@ main(int argc, char **argv)
       std::vector<double> errors;
       for (const double h : {0.5, 0.25, 0.125, 0.0625})
         {
-          auto parameters = read_parameters(
-            substitute(scene,
-                       {{"degree", std::to_string(degree)},
-                        {"E", str(E)},
-                        {"nu", str(nu)},
-                        {"G", str(G)},
-                        {"I", str(I)},
-                        {"P", str(P)},
-                        {"l", str(l)},
-                        {"c", str(c)},
-                        {"h", str(h)}}),
-            "cantilever");
+          auto parameters =
+            read_parameters(substitute(scene,
+                                       {{"degree", std::to_string(degree)},
+                                        {"E", str(E)},
+                                        {"nu", str(nu)},
+                                        {"G", str(G)},
+                                        {"I", str(I)},
+                                        {"P", str(P)},
+                                        {"l", str(l)},
+                                        {"c", str(c)},
+                                        {"h", str(h)}}),
+                            "cantilever");
           ndda::Simulator<2> simulator(parameters);
           simulator.setup();
           simulator.do_time_step();

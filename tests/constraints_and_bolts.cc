@@ -12,9 +12,9 @@
 // 3. Viscosity: a sliding block with viscosity mu and density rho slows
 //    down as v0 exp(-mu t / rho).
 
-#include "tests.h"
-
 #include <cmath>
+
+#include "tests.h"
 
 using namespace ndda_tests;
 
@@ -161,14 +161,15 @@ main(int argc, char **argv)
                                                         {"exact", "CG-AMG"},
                                                         {"penalty", "UMFPACK"}})
     {
-      auto parameters = read_parameters(
-        substitute(roller_scene, {{"method", method}, {"solver", solver}}),
-        "rollers");
+      auto parameters =
+        read_parameters(substitute(roller_scene,
+                                   {{"method", method}, {"solver", solver}}),
+                        "rollers");
       ndda::Simulator<2> simulator(parameters);
       simulator.setup();
       while (simulator.get_time() < t - 1e-12)
         simulator.do_time_step();
-      const auto &u = simulator.get_measure_histories()[0].back().displacement;
+      const auto  &u = simulator.get_measure_histories()[0].back().displacement;
       Tensor<1, 2> tangent, normal;
       tangent[0] = std::cos(a);
       tangent[1] = std::sin(a);
@@ -177,15 +178,15 @@ main(int argc, char **argv)
       // The block also deforms elastically under its weight (and vibrates,
       // the load being sudden), of order rho g h^2 / E = 2e-8 m: a
       // relative 1e-6 of the sliding distance.
-      const double along_error = std::abs(u * tangent - along) / std::abs(along);
+      const double along_error =
+        std::abs(u * tangent - along) / std::abs(along);
       std::cout << "rollers, " << method << " constraints, " << solver
                 << ": displacement along the rollers " << u * tangent
                 << " m (exact " << along << "), relative error "
                 << std::scientific << std::setprecision(2) << along_error
                 << ", normal " << u * normal << " m" << std::defaultfloat
                 << std::setprecision(6) << std::endl;
-      check(along_error < (method == "exact" ? 1e-6 : 1e-3),
-            "roller sliding");
+      check(along_error < (method == "exact" ? 1e-6 : 1e-3), "roller sliding");
       check(std::abs(u * normal) < 1e-7, "motion normal to the rollers");
     }
 
@@ -200,9 +201,9 @@ main(int argc, char **argv)
         "bolt");
       ndda::Simulator<2> simulator(parameters);
       simulator.run();
-      const auto  &h       = simulator.get_measure_histories();
-      const double stretch = h[1].back().displacement[0] -
-                             h[0].back().displacement[0];
+      const auto  &h = simulator.get_measure_histories();
+      const double stretch =
+        h[1].back().displacement[0] - h[0].back().displacement[0];
       const double exact = (force - pretension) / 1e7;
       const double error = std::abs(stretch - exact) / std::abs(exact);
       std::cout << "bolt, force " << force << " N, pretension " << pretension
@@ -215,12 +216,12 @@ main(int argc, char **argv)
 
   // 3. Viscosity: mu / rho = 1 / s.
   {
-    auto parameters = read_parameters(viscous_scene, "viscous");
+    auto               parameters = read_parameters(viscous_scene, "viscous");
     ndda::Simulator<2> simulator(parameters);
     simulator.setup();
     while (simulator.get_time() < 1 - 1e-12)
       simulator.do_time_step();
-    const double v     = simulator.get_measure_histories()[0].back().velocity[0];
+    const double v = simulator.get_measure_histories()[0].back().velocity[0];
     const double exact = std::exp(-1.);
     const double error = std::abs(v - exact) / exact;
     std::cout << "viscosity: velocity after 1 s " << v << " m/s (exact "

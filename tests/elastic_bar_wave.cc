@@ -16,9 +16,9 @@
 // and at 0.97 m. Newmark must give the speed within 1% and the peak
 // velocity within 3%; the DDA scheme's damping is reported.
 
-#include "tests.h"
-
 #include <cmath>
+
+#include "tests.h"
 
 using namespace ndda_tests;
 
@@ -132,20 +132,21 @@ main(int argc, char **argv)
 {
   using namespace dealii;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string h = argc > 1 ? argv[1] : "0.005";
+  const std::string                h = argc > 1 ? argv[1] : "0.005";
 
   std::cout << "bar speed sqrt(E/rho) = " << c
-            << " m/s, peak particle velocity p0/(rho c) = "
-            << p0 / (rho * c) << " m/s, mesh size " << h << " m\n";
+            << " m/s, peak particle velocity p0/(rho c) = " << p0 / (rho * c)
+            << " m/s, mesh size " << h << " m\n";
   for (const std::string integrator : {"Newmark", "DDA"})
     {
-      auto parameters = read_parameters(
-        substitute(scene, {{"integrator", integrator}, {"h", h}}),
-        "elastic_bar_wave");
+      auto parameters =
+        read_parameters(substitute(scene,
+                                   {{"integrator", integrator}, {"h", h}}),
+                        "elastic_bar_wave");
       ndda::Simulator<2> simulator(parameters);
       simulator.run();
-      const auto &histories = simulator.get_measure_histories();
-      const double x[3]     = {0.25, 0.5, 0.97};
+      const auto  &histories = simulator.get_measure_histories();
+      const double x[3]      = {0.25, 0.5, 0.97};
 
       std::vector<double> t;
       for (const auto &s : histories[0])
@@ -158,9 +159,9 @@ main(int argc, char **argv)
             speed[p].push_back(s.velocity[0]);
           }
       // The incident pulse only: before the reflection reaches the point.
-      const double window[2] = {(2 * L - x[0]) / c, (2 * L - x[1]) / c};
-      const double t25       = centroid(t, compression[0], window[0]);
-      const double t50       = centroid(t, compression[1], window[1]);
+      const double window[2]      = {(2 * L - x[0]) / c, (2 * L - x[1]) / c};
+      const double t25            = centroid(t, compression[0], window[0]);
+      const double t50            = centroid(t, compression[1], window[1]);
       const double measured_speed = (x[1] - x[0]) / (t50 - t25);
       const double speed_error    = measured_speed / c - 1;
       std::cout << integrator << ": " << simulator.get_step_number()
@@ -190,15 +191,14 @@ main(int argc, char **argv)
                 }
               exact_s = std::max(exact_s, -exact_stress(x[p], s));
             }
-          const auto [tv, v]  = peak(t, speed[p]);
-          const auto [ts, sc] = peak(t, compression[p]);
+          const auto [tv, v]   = peak(t, speed[p]);
+          const auto [ts, sc]  = peak(t, compression[p]);
           const double v_error = v / exact_v - 1;
-          std::cout << "  x = " << x[p] << ": peak velocity " << v
-                    << " m/s at " << tv * 1e6 << " us (exact " << exact_v
-                    << " at " << exact_tv * 1e6 << " us), error "
-                    << 100 * v_error << " %; peak compression " << sc
-                    << " Pa (exact " << exact_s << "), error "
-                    << 100 * (sc / exact_s - 1) << " %\n";
+          std::cout << "  x = " << x[p] << ": peak velocity " << v << " m/s at "
+                    << tv * 1e6 << " us (exact " << exact_v << " at "
+                    << exact_tv * 1e6 << " us), error " << 100 * v_error
+                    << " %; peak compression " << sc << " Pa (exact " << exact_s
+                    << "), error " << 100 * (sc / exact_s - 1) << " %\n";
           worst_peak_error = std::max(worst_peak_error, std::abs(v_error));
         }
       if (integrator == "Newmark")

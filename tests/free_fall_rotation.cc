@@ -14,9 +14,9 @@
 // the measured area change after one turn's time, checks it against this
 // prediction, and checks that it halves when the step is halved.
 
-#include "tests.h"
-
 #include <cmath>
+
+#include "tests.h"
 
 using namespace ndda_tests;
 
@@ -61,12 +61,12 @@ main(int argc, char **argv)
 
   for (const std::string integrator : {"Newmark", "DDA"})
     {
-      auto parameters = read_parameters(substitute(scene,
+      auto               parameters = read_parameters(substitute(scene,
                                                    {{"integrator", integrator},
-                                                    {"dt", "0.01"},
-                                                    {"end", "1"},
-                                                    {"velocity", "0; 0"},
-                                                    {"g", "-9.81"}}),
+                                                                  {"dt", "0.01"},
+                                                                  {"end", "1"},
+                                                                  {"velocity", "0; 0"},
+                                                                  {"g", "-9.81"}}),
                                         "free_fall");
       ndda::Simulator<2> simulator(parameters);
       simulator.setup();
@@ -74,12 +74,12 @@ main(int argc, char **argv)
       while (simulator.get_time() < 1 - 1e-12)
         {
           simulator.do_time_step();
-          const double t = simulator.get_time();
-          const auto &sample = simulator.get_measure_histories()[0].back();
-          worst              = std::max(
-            {worst,
-             std::abs(sample.displacement[1] + 0.5 * 9.81 * t * t),
-             std::abs(sample.displacement[0])});
+          const double t      = simulator.get_time();
+          const auto  &sample = simulator.get_measure_histories()[0].back();
+          worst =
+            std::max({worst,
+                      std::abs(sample.displacement[1] + 0.5 * 9.81 * t * t),
+                      std::abs(sample.displacement[0])});
         }
       std::cout << "free fall, " << integrator
                 << ": largest position error over 100 steps " << std::scientific
@@ -92,32 +92,33 @@ main(int argc, char **argv)
       check(worst < 1e-9 * 0.5 * 9.81, "free fall not exact to round-off");
     }
 
-  const double omega = 2 * M_PI; // one turn per second
+  const double omega           = 2 * M_PI; // one turn per second
   double       previous_change = 0;
   for (const double dt : {2e-3, 1e-3})
     {
-      auto parameters = read_parameters(
-        substitute(scene,
-                   {{"integrator", "Newmark"},
-                    {"dt", std::to_string(dt)},
-                    {"end", "1"},
-                    {"velocity",
-                     "-" + std::to_string(omega) + "*y; " +
-                       std::to_string(omega) + "*x"},
-                    {"g", "0"}}),
-        "free_rotation");
+      auto parameters =
+        read_parameters(substitute(scene,
+                                   {{"integrator", "Newmark"},
+                                    {"dt", std::to_string(dt)},
+                                    {"end", "1"},
+                                    {"velocity",
+                                     "-" + std::to_string(omega) + "*y; " +
+                                       std::to_string(omega) + "*x"},
+                                    {"g", "0"}}),
+                        "free_rotation");
       ndda::Simulator<2> simulator(parameters);
       simulator.setup();
       const double area0 = simulator.get_mesh().area();
       while (simulator.get_time() < 1 - 1e-12)
         simulator.do_time_step();
-      const double change = simulator.get_mesh().area() / area0 - 1;
-      const double theta  = omega * dt;
-      const double n      = simulator.get_step_number();
+      const double change    = simulator.get_mesh().area() / area0 - 1;
+      const double theta     = omega * dt;
+      const double n         = simulator.get_step_number();
       const double predicted = n * theta * theta;
       // Angle turned by the point that started at (0.5, 0).
-      const auto   &u     = simulator.get_measure_histories()[0].back();
-      const double  angle = std::atan2(u.displacement[1], 0.5 + u.displacement[0]);
+      const auto  &u = simulator.get_measure_histories()[0].back();
+      const double angle =
+        std::atan2(u.displacement[1], 0.5 + u.displacement[0]);
       std::cout << "free rotation, dt = " << dt << ": area change after one "
                 << "turn's time " << 100 * change << " % (linear-update "
                 << "prediction N theta^2 = " << 100 * predicted

@@ -4,10 +4,10 @@
 // load resultants, exact to round-off, on a meshed disc (a 64-gon) and on
 // an L-shaped block with a hole, for P1 and P2.
 
-#include "tests.h"
-
 #include <cmath>
 #include <sstream>
+
+#include "tests.h"
 
 using namespace ndda_tests;
 
@@ -76,17 +76,18 @@ main(int argc, char **argv)
          << ", " << radius * std::sin(2 * M_PI * i / n_sides);
   const double disc_area =
     0.5 * n_sides * radius * radius * std::sin(2 * M_PI / n_sides);
-  const double ell_area  = 2 * 1 + 1 * 1 - 0.4 * 0.4;
-  const double area      = disc_area + ell_area;
-  const double rho       = 2500, thickness = 0.5;
-  const double t         = 2;
+  const double ell_area = 2 * 1 + 1 * 1 - 0.4 * 0.4;
+  const double area     = disc_area + ell_area;
+  const double rho = 2500, thickness = 0.5;
+  const double t = 2;
 
   for (const unsigned int degree : {1u, 2u})
     {
-      auto parameters = read_parameters(
-        substitute(scene,
-                   {{"degree", std::to_string(degree)}, {"disc", disc.str()}}),
-        "mass_and_loads");
+      auto parameters =
+        read_parameters(substitute(scene,
+                                   {{"degree", std::to_string(degree)},
+                                    {"disc", disc.str()}}),
+                        "mass_and_loads");
       ndda::Simulator<2> simulator(parameters);
       simulator.setup();
       simulator.do_time_step(); // builds the matrices
@@ -99,13 +100,12 @@ main(int argc, char **argv)
         {
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            (fe.system_to_component_index(i).first == 0 ? ex :
-                                                          ey)[dofs[i]] = 1;
+            (fe.system_to_component_index(i).first == 0 ? ex : ey)[dofs[i]] = 1;
         }
       // The mesh has moved a little in the first step; mass does not
       // change, and the loads are compared on the moved mesh's lengths,
       // which are those of the initial segments up to the motion.
-      const double mass       = simulator.get_mass_matrix().matrix_norm_square(ex);
+      const double mass = simulator.get_mass_matrix().matrix_norm_square(ex);
       const double exact_mass = rho * thickness * area;
 
       // Gravity alone: switch the other loads off by comparing with their

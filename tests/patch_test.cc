@@ -50,10 +50,11 @@ main(int argc, char **argv)
   for (const std::string plane : {"plane stress", "plane strain"})
     for (const unsigned int degree : {1u, 2u})
       {
-        auto parameters = read_parameters(
-          substitute(scene,
-                     {{"degree", std::to_string(degree)}, {"plane", plane}}),
-          "patch_test");
+        auto parameters =
+          read_parameters(substitute(scene,
+                                     {{"degree", std::to_string(degree)},
+                                      {"plane", plane}}),
+                          "patch_test");
         ndda::Simulator<2> simulator(parameters);
         simulator.setup();
         // Initial positions of the nodes, before the mesh moves.
@@ -64,9 +65,10 @@ main(int argc, char **argv)
         simulator.do_time_step();
 
         // Exact fields.
-        const double eps_xx = 1e-3, eps_yy = 3e-3, eps_xy = 0.5 * (2e-3 - 0.5e-3);
-        double       max_u_error = 0, max_u = 0;
-        const auto  &fe          = simulator.get_dof_handler().get_fe();
+        const double eps_xx = 1e-3, eps_yy = 3e-3,
+                     eps_xy     = 0.5 * (2e-3 - 0.5e-3);
+        double      max_u_error = 0, max_u = 0;
+        const auto &fe = simulator.get_dof_handler().get_fe();
         std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
         for (const auto &cell :
              simulator.get_dof_handler().active_cell_iterators())
@@ -79,22 +81,22 @@ main(int argc, char **argv)
                   fe.system_to_component_index(i).first == 0 ?
                        1e-3 + 1e-3 * x[0] + 2e-3 * x[1] :
                        -2e-3 - 0.5e-3 * x[0] + 3e-3 * x[1];
-                max_u_error = std::max(max_u_error,
-                                       std::abs(simulator.get_displacement()
-                                                  [dofs[i]] -
-                                                exact));
+                max_u_error =
+                  std::max(max_u_error,
+                           std::abs(simulator.get_displacement()[dofs[i]] -
+                                    exact));
                 max_u = std::max(max_u, std::abs(exact));
               }
           }
-        const double E = 30e9, nu = 0.3;
-        const double lambda =
-          plane == "plane strain" ? E * nu / ((1 + nu) * (1 - 2 * nu)) :
-                                    E * nu / (1 - nu * nu);
-        const double mu = E / (2 * (1 + nu));
+        const double          E = 30e9, nu = 0.3;
+        const double          lambda = plane == "plane strain" ?
+                                         E * nu / ((1 + nu) * (1 - 2 * nu)) :
+                                         E * nu / (1 - nu * nu);
+        const double          mu     = E / (2 * (1 + nu));
         SymmetricTensor<2, 2> exact_stress;
-        exact_stress[0][0] = lambda * (eps_xx + eps_yy) + 2 * mu * eps_xx;
-        exact_stress[1][1] = lambda * (eps_xx + eps_yy) + 2 * mu * eps_yy;
-        exact_stress[0][1] = 2 * mu * eps_xy;
+        exact_stress[0][0]      = lambda * (eps_xx + eps_yy) + 2 * mu * eps_xx;
+        exact_stress[1][1]      = lambda * (eps_xx + eps_yy) + 2 * mu * eps_yy;
+        exact_stress[0][1]      = 2 * mu * eps_xy;
         double max_stress_error = 0;
         for (unsigned int c = 0;
              c < simulator.get_mesh().get_triangulation().n_active_cells();

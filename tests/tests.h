@@ -23,8 +23,7 @@ namespace ndda_tests
 {
   /** Replace every "{key}" in @p text by its value. */
   inline std::string
-  substitute(std::string                               text,
-             const std::map<std::string, std::string> &values)
+  substitute(std::string text, const std::map<std::string, std::string> &values)
   {
     for (const auto &[key, value] : values)
       {

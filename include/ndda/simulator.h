@@ -3,6 +3,7 @@
 #define ndda_simulator_h
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -19,8 +20,6 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
-#include <deal.II/base/data_out_base.h>
 
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
@@ -41,10 +40,10 @@ namespace ndda
    */
   struct MeasureSample
   {
-    double                  time;
-    Tensor<1, 2>            displacement;
-    Tensor<1, 2>            velocity;
-    SymmetricTensor<2, 2>   stress;
+    double                time;
+    Tensor<1, 2>          displacement;
+    Tensor<1, 2>          velocity;
+    SymmetricTensor<2, 2> stress;
   };
 
   /**
@@ -291,8 +290,8 @@ namespace ndda
     bool
     try_time_step(const double dt);
     void
-    prescribed_increment(const double t0,
-                         const double dt,
+    prescribed_increment(const double    t0,
+                         const double    dt,
                          Vector<double> &increment) const;
     void
     update_state(const Vector<double> &d, const double dt);
@@ -314,8 +313,8 @@ namespace ndda
     PointEvaluator
     make_point_evaluator(const Point<dim> &p, const std::string &entry) const;
 
-    parameters::Parameters parameters;
-    ParameterHandler       prm;
+    parameters::Parameters              parameters;
+    ParameterHandler                    prm;
     std::unique_ptr<Triangulation<dim>> user_triangulation;
 
     /// Console output; also copied into the log file once the run starts.
@@ -323,14 +322,14 @@ namespace ndda
     std::unique_ptr<std::streambuf> tee_buffer;
     std::ostream                    console;
     ConditionalOStream              pcout;
-    mutable TimerOutput    timer;
+    mutable TimerOutput             timer;
 
-    CrackableMesh                    mesh;
-    std::unique_ptr<FESystem<dim>>   fe;
-    MappingFE<dim>                   mapping;
-    std::unique_ptr<Quadrature<dim>> quadrature;
+    CrackableMesh                        mesh;
+    std::unique_ptr<FESystem<dim>>       fe;
+    MappingFE<dim>                       mapping;
+    std::unique_ptr<Quadrature<dim>>     quadrature;
     std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
-    DoFHandler<dim>                  dof_handler;
+    DoFHandler<dim>                      dof_handler;
 
     ElementCache<dim> element_cache;
 
@@ -345,20 +344,20 @@ namespace ndda
     /// Node of every dof.
     std::vector<unsigned int> dof_to_node;
 
-    AffineConstraints<double>   constraints;
-    std::vector<NodeConstraint> node_constraints;
+    AffineConstraints<double>                         constraints;
+    std::vector<NodeConstraint>                       node_constraints;
     std::vector<std::unique_ptr<FunctionParser<dim>>> constraint_functions;
     double                                            penalty_stiffness = 0;
 
-    SparsityPattern      sparsity_pattern;
-    SparseMatrix<double> stiffness_matrix;
-    SparseMatrix<double> mass_matrix;
-    SparseMatrix<double> damping_matrix;
-    bool                 has_damping = false;
-    SparseMatrix<double> system_matrix;
-    SparseMatrix<double> condensed_matrix;
+    SparsityPattern               sparsity_pattern;
+    SparseMatrix<double>          stiffness_matrix;
+    SparseMatrix<double>          mass_matrix;
+    SparseMatrix<double>          damping_matrix;
+    bool                          has_damping = false;
+    SparseMatrix<double>          system_matrix;
+    SparseMatrix<double>          condensed_matrix;
     std::unique_ptr<LinearSolver> linear_solver;
-    double                        factorized_dt = -1;
+    double                        factorized_dt    = -1;
     bool                          matrices_changed = true;
 
     Vector<double> displacement;
@@ -369,7 +368,7 @@ namespace ndda
 
     std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
 
-    std::unique_ptr<FunctionParser<dim>> gravity;
+    std::unique_ptr<FunctionParser<dim>>              gravity;
     std::vector<std::unique_ptr<FunctionParser<dim>>> point_load_functions;
     std::vector<PointEvaluator>                       point_load_points;
     std::vector<std::unique_ptr<FunctionParser<dim>>> line_load_functions;
@@ -379,23 +378,23 @@ namespace ndda
     std::vector<PointEvaluator>             measure_points;
     std::vector<std::vector<MeasureSample>> measure_histories;
 
-    double       time            = 0;
-    double       time_step       = 0;
-    unsigned int step_number     = 0;
-    double       stored_strain_energy = 0;
-    double       scene_half_height    = 0;
+    double       time                   = 0;
+    double       time_step              = 0;
+    unsigned int step_number            = 0;
+    double       stored_strain_energy   = 0;
+    double       scene_half_height      = 0;
     unsigned int last_solver_iterations = 0;
-    unsigned int step_cuts            = 0;
-    unsigned int n_matrix_rebuilds    = 0;
-    double       last_step_time       = 0;
-    double       max_increment        = 0;
-    bool         is_set_up            = false;
-    bool         parameters_from_file = false;
-    double       last_dt              = 0;
+    unsigned int step_cuts              = 0;
+    unsigned int n_matrix_rebuilds      = 0;
+    double       last_step_time         = 0;
+    double       max_increment          = 0;
+    bool         is_set_up              = false;
+    bool         parameters_from_file   = false;
+    double       last_dt                = 0;
 
-    TableHandler statistics;
-    double       next_output_time = 0;
-    unsigned int output_number    = 0;
+    TableHandler                                statistics;
+    double                                      next_output_time = 0;
+    unsigned int                                output_number    = 0;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<XDMFEntry>                      xdmf_entries;
   };

@@ -17,7 +17,7 @@ namespace ndda
   namespace
   {
     double
-    signed_area(const std::vector<Point<2>>         &vertices,
+    signed_area(const std::vector<Point<2>>       &vertices,
                 const std::array<unsigned int, 3> &t)
     {
       const Tensor<1, 2> a = vertices[t[1]] - vertices[t[0]];
@@ -68,11 +68,11 @@ namespace ndda
                                " has no valid block."));
         const double area = signed_area(mesh.vertices, t);
         AssertThrow(area > 1e-14 * max_extent * max_extent,
-                    ExcMessage("Mesh: " + describe(mesh, c) +
-                               (area < 0 ? " is clockwise." :
-                                           " has zero area.") +
-                               " Every triangle must be counter-clockwise "
-                               "with positive area."));
+                    ExcMessage(
+                      "Mesh: " + describe(mesh, c) +
+                      (area < 0 ? " is clockwise." : " has zero area.") +
+                      " Every triangle must be counter-clockwise "
+                      "with positive area."));
         auto sorted = t;
         std::sort(sorted.begin(), sorted.end());
         AssertThrow(sorted[0] != sorted[1] && sorted[1] != sorted[2],
@@ -99,13 +99,12 @@ namespace ndda
             if (vertex_block[v] == numbers::invalid_unsigned_int)
               vertex_block[v] = mesh.cell_block[c];
             AssertThrow(vertex_block[v] == mesh.cell_block[c],
-                        ExcMessage("Mesh: vertex " + std::to_string(v) +
-                                   " at " +
-                                   Utilities::to_string(mesh.vertices[v][0]) +
-                                   ", " +
-                                   Utilities::to_string(mesh.vertices[v][1]) +
-                                   " is shared by two blocks. Blocks must "
-                                   "not share vertices."));
+                        ExcMessage(
+                          "Mesh: vertex " + std::to_string(v) + " at " +
+                          Utilities::to_string(mesh.vertices[v][0]) + ", " +
+                          Utilities::to_string(mesh.vertices[v][1]) +
+                          " is shared by two blocks. Blocks must "
+                          "not share vertices."));
           }
       }
     for (unsigned int v = 0; v < vertex_block.size(); ++v)
@@ -296,6 +295,40 @@ namespace ndda
           upper[d] = std::max(upper[d], v[d]);
         }
     return {lower, upper};
+  }
+
+
+
+  std::pair<unsigned int, Point<2>>
+  CrackableMesh::locate(const Point<2> &p) const
+  {
+    const auto   box = bounding_box();
+    const double tolerance =
+      1e-10 * std::max(1., box.first.distance(box.second));
+    unsigned int best       = numbers::invalid_unsigned_int;
+    double       best_score = -tolerance;
+    Point<2>     best_unit;
+    for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
+      {
+        const auto        &t  = block_mesh.triangles[c];
+        const auto        &v  = block_mesh.vertices;
+        const Tensor<1, 2> e1 = v[t[1]] - v[t[0]], e2 = v[t[2]] - v[t[0]];
+        const Tensor<1, 2> r   = p - v[t[0]];
+        const double       det = e1[0] * e2[1] - e1[1] * e2[0];
+        // x = v0 + xi e1 + eta e2 (deal.II's reference triangle).
+        const double xi  = (r[0] * e2[1] - r[1] * e2[0]) / det;
+        const double eta = (e1[0] * r[1] - e1[1] * r[0]) / det;
+        // Smallest barycentric coordinate, in units of length.
+        const double score =
+          std::min({xi, eta, 1. - xi - eta}) * std::sqrt(std::abs(det));
+        if (score > best_score)
+          {
+            best       = c;
+            best_score = score;
+            best_unit  = Point<2>(xi, eta);
+          }
+      }
+    return {best, best_unit};
   }
 
 

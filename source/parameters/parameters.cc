@@ -101,10 +101,7 @@ namespace ndda
                                           3);
         state.stress        = {{stress[0], stress[1], stress[2]}};
         state.velocity      = prm.get("Initial velocity");
-        check_function(state.velocity,
-                       2,
-                       "x,y",
-                       where + "/Initial velocity");
+        check_function(state.velocity, 2, "x,y", where + "/Initial velocity");
         return state;
       }
 
@@ -137,8 +134,9 @@ namespace ndda
       {
         description.material_id =
           materials.id(prm.get("Material"), where + "/Material");
-        description.mesh_size      = prm.get_double("Mesh size");
-        description.target_n_cells = prm.get_integer("Target number of elements");
+        description.mesh_size = prm.get_double("Mesh size");
+        description.target_n_cells =
+          prm.get_integer("Target number of elements");
         AssertThrow(description.mesh_size > 0. ||
                       description.target_n_cells > 0,
                     ExcMessage(where +
@@ -252,15 +250,15 @@ namespace ndda
         {
           AssertThrow(false,
                       ExcMessage(entry + ": '" + expression +
-                                 "' is not a valid function of (" +
-                                 variables + "): " + message_of(exc)));
+                                 "' is not a valid function of (" + variables +
+                                 "): " + message_of(exc)));
         }
       catch (const std::exception &exc)
         {
           AssertThrow(false,
                       ExcMessage(entry + ": '" + expression +
-                                 "' is not a valid function of (" +
-                                 variables + "): " + exc.what()));
+                                 "' is not a valid function of (" + variables +
+                                 "): " + exc.what()));
         }
     }
 
@@ -353,11 +351,9 @@ namespace ndda
     {
       prm.enter_subsection("Control");
       const auto analysis = prm.get("Analysis type");
-      analysis_type       = analysis == "static" ?
-                              AnalysisType::static_analysis :
-                            analysis == "dynamic" ?
-                              AnalysisType::dynamic_analysis :
-                              AnalysisType::quasi_static;
+      analysis_type   = analysis == "static"  ? AnalysisType::static_analysis :
+                        analysis == "dynamic" ? AnalysisType::dynamic_analysis :
+                                                AnalysisType::quasi_static;
       time_integrator = prm.get("Time integrator") == "DDA" ?
                           TimeIntegrator::dda :
                           TimeIntegrator::newmark;
@@ -375,13 +371,13 @@ namespace ndda
       AssertThrow(max_displacement_ratio > 0.,
                   ExcMessage("Control/Maximum displacement ratio: must be "
                              "greater than zero, e.g. 0.01."));
-      max_step_cuts   = prm.get_integer("Maximum step cuts");
-      element_degree  = prm.get_integer("Element degree");
-      const auto ls   = prm.get("Linear solver");
-      linear_solver   = ls == "UMFPACK" ? LinearSolver::umfpack :
-                        ls == "KLU"     ? LinearSolver::klu :
-                                          LinearSolver::cg_amg;
-      solver_tolerance = prm.get_double("Solver tolerance");
+      max_step_cuts     = prm.get_integer("Maximum step cuts");
+      element_degree    = prm.get_integer("Element degree");
+      const auto ls     = prm.get("Linear solver");
+      linear_solver     = ls == "UMFPACK" ? LinearSolver::umfpack :
+                          ls == "KLU"     ? LinearSolver::klu :
+                                            LinearSolver::cg_amg;
+      solver_tolerance  = prm.get_double("Solver tolerance");
       constraint_method = prm.get("Constraint method") == "exact" ?
                             ConstraintMethod::exact :
                             ConstraintMethod::penalty;
@@ -444,8 +440,8 @@ namespace ndda
                              "/Young's modulus: must be greater than zero."));
       poissons_ratio = prm.get_double("Poisson's ratio");
       AssertThrow(poissons_ratio < 0.5 && poissons_ratio > -1.,
-                  ExcMessage("Materials/" + n + "/Poisson's ratio: " +
-                             prm.get("Poisson's ratio") +
+                  ExcMessage("Materials/" + n +
+                             "/Poisson's ratio: " + prm.get("Poisson's ratio") +
                              " gives an incompressible or unstable material; "
                              "give a value in (-1, 0.5)."));
       friction_angle   = prm.get_double("Friction angle");
@@ -660,21 +656,20 @@ namespace ndda
                       ExcMessage("Geometry/Mesh file: a mesh file is given "
                                  "together with Blocks or Regions. Use "
                                  "either the mesh file or the polygons."));
-          for (const auto &item :
-               split(prm.get("Mesh file materials"), ","))
+          for (const auto &item : split(prm.get("Mesh file materials"), ","))
             {
               const auto pair = Utilities::split_string_list(item, ":");
               AssertThrow(pair.size() == 2,
-                          ExcMessage("Geometry/Mesh file materials: '" +
-                                     item + "' is not 'tag: material'."));
+                          ExcMessage("Geometry/Mesh file materials: '" + item +
+                                     "' is not 'tag: material'."));
               const double tag =
                 to_double(pair[0], "Geometry/Mesh file materials");
               AssertThrow(tag >= 0 && tag == std::floor(tag),
                           ExcMessage("Geometry/Mesh file materials: '" +
                                      pair[0] + "' is not a physical tag."));
               materials.id(pair[1], "Geometry/Mesh file materials");
-              mesh_file_materials.emplace_back(
-                static_cast<unsigned int>(tag), pair[1]);
+              mesh_file_materials.emplace_back(static_cast<unsigned int>(tag),
+                                               pair[1]);
             }
         }
       blocks.clear();
@@ -684,12 +679,11 @@ namespace ndda
           const std::string where = "Geometry/" + name;
           prm.enter_subsection(name);
           geometry::BlockDescription block;
-          block.name  = name;
-          block.outer = parse_points(prm.get("Outer boundary"),
-                                     where + "/Outer boundary");
-          block.holes = parse_rings(prm.get("Holes"), where + "/Holes");
-          block.cracks =
-            parse_segments(prm.get("Cracks"), where + "/Cracks");
+          block.name = name;
+          block.outer =
+            parse_points(prm.get("Outer boundary"), where + "/Outer boundary");
+          block.holes  = parse_rings(prm.get("Holes"), where + "/Holes");
+          block.cracks = parse_segments(prm.get("Cracks"), where + "/Cracks");
           parse_mesh_size(prm, where, materials, block);
           blocks.push_back(block);
           block_states.push_back(parse_initial_state(prm, where));
@@ -702,12 +696,11 @@ namespace ndda
           const std::string where = "Geometry/" + name;
           prm.enter_subsection(name);
           geometry::RegionDescription region;
-          region.name  = name;
-          region.outer = parse_points(prm.get("Outer boundary"),
-                                      where + "/Outer boundary");
-          region.holes = parse_rings(prm.get("Holes"), where + "/Holes");
-          region.joints =
-            parse_segments(prm.get("Joints"), where + "/Joints");
+          region.name = name;
+          region.outer =
+            parse_points(prm.get("Outer boundary"), where + "/Outer boundary");
+          region.holes  = parse_rings(prm.get("Holes"), where + "/Holes");
+          region.joints = parse_segments(prm.get("Joints"), where + "/Joints");
           region.keep_dangling_as_cracks =
             prm.get_bool("Keep dangling joints as cracks");
           parse_mesh_size(prm, where, materials, region);
@@ -726,11 +719,12 @@ namespace ndda
                               const std::vector<std::string> &line_names)
     {
       prm.enter_subsection("Loads");
-      prm.declare_entry("Gravity",
-                        "0; 0",
-                        Patterns::Anything(),
-                        "Gravitational acceleration g_x; g_y (m/s^2) as "
-                        "functions of t (x and y may be used too), e.g. '0; -9.81'.");
+      prm.declare_entry(
+        "Gravity",
+        "0; 0",
+        Patterns::Anything(),
+        "Gravitational acceleration g_x; g_y (m/s^2) as "
+        "functions of t (x and y may be used too), e.g. '0; -9.81'.");
       prm.declare_entry("Point loads",
                         "",
                         Patterns::Anything(),
@@ -749,10 +743,11 @@ namespace ndda
                             Patterns::Anything(),
                             "Point of application 'x, y' (m), inside or on "
                             "a block.");
-          prm.declare_entry("Force",
-                            "0; 0",
-                            Patterns::Anything(),
-                            "Force f_x; f_y (N) as functions of t (and of the initial position x, y).");
+          prm.declare_entry(
+            "Force",
+            "0; 0",
+            Patterns::Anything(),
+            "Force f_x; f_y (N) as functions of t (and of the initial position x, y).");
           prm.leave_subsection();
         }
       for (const auto &name : line_names)
@@ -812,9 +807,9 @@ namespace ndda
           prm.enter_subsection(name);
           const std::string where = "Loads/" + name;
           LineLoad          load;
-          load.name          = name;
-          const auto segment = parse_segments(prm.get("Segment"),
-                                              where + "/Segment");
+          load.name = name;
+          const auto segment =
+            parse_segments(prm.get("Segment"), where + "/Segment");
           AssertThrow(segment.size() == 1,
                       ExcMessage(where + "/Segment: give exactly one "
                                          "segment 'x1, y1, x2, y2'."));
@@ -885,9 +880,8 @@ namespace ndda
 
 
     void
-    BoundaryConditions::parse_parameters(
-      ParameterHandler               &prm,
-      const std::vector<std::string> &names)
+    BoundaryConditions::parse_parameters(ParameterHandler               &prm,
+                                         const std::vector<std::string> &names)
     {
       prm.enter_subsection("Boundary conditions");
       conditions.clear();
@@ -902,8 +896,9 @@ namespace ndda
                             type == "roller"       ? ConstraintType::roller :
                             type == "displacement" ? ConstraintType::displacement :
                                                      ConstraintType::velocity;
-          bc.points   = parse_points(prm.get("Points"), where + "/Points");
-          bc.segments = parse_segments(prm.get("Segments"), where + "/Segments");
+          bc.points       = parse_points(prm.get("Points"), where + "/Points");
+          bc.segments =
+            parse_segments(prm.get("Segments"), where + "/Segments");
           AssertThrow(!bc.points.empty() || !bc.segments.empty(),
                       ExcMessage(where + ": neither Points nor Segments is "
                                          "given. Say where the constraint "
@@ -1033,11 +1028,11 @@ namespace ndda
         directory = "output/" + scene_name;
       if (directory.back() != '/')
         directory += '/';
-      interval       = prm.get_double("Interval");
-      write_vtu      = prm.get_bool("Write vtu");
-      write_hdf5     = prm.get_bool("Write hdf5");
-      measure_points = parse_points(prm.get("Measure points"),
-                                    "Output/Measure points");
+      interval   = prm.get_double("Interval");
+      write_vtu  = prm.get_bool("Write vtu");
+      write_hdf5 = prm.get_bool("Write hdf5");
+      measure_points =
+        parse_points(prm.get("Measure points"), "Output/Measure points");
       progress_interval = prm.get_double("Progress interval");
       prm.leave_subsection();
     }
@@ -1168,11 +1163,11 @@ namespace ndda
                              "Control/Element degree is 2. Set 'Write hdf5 "
                              "= false' or use degree 1."));
       AssertThrow(control.time_step <= control.end_time,
-                  ExcMessage("Control/Time step: " +
-                             std::to_string(control.time_step) +
-                             " is larger than Control/End time " +
-                             std::to_string(control.end_time) +
-                             ". Make the step smaller than the end time."));
+                  ExcMessage(
+                    "Control/Time step: " + std::to_string(control.time_step) +
+                    " is larger than Control/End time " +
+                    std::to_string(control.end_time) +
+                    ". Make the step smaller than the end time."));
     }
 
 

@@ -51,7 +51,7 @@ namespace ndda
                                                   material.poissons_ratio,
                                                   materials.plane_strain));
 
-    FEValues<dim> fe_values(mapping,
+    FEValues<dim>                    fe_values(mapping,
                             fe,
                             quadrature,
                             update_values | update_gradients |
@@ -72,8 +72,9 @@ namespace ndda
               shift += (cell->vertex(v) - d.vertices[v]) / cell->n_vertices();
             double moved = 0;
             for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-              moved = std::max(moved,
-                               (cell->vertex(v) - d.vertices[v] - shift).norm());
+              moved =
+                std::max(moved,
+                         (cell->vertex(v) - d.vertices[v] - shift).norm());
             if (moved <= tolerance * d.diameter)
               continue;
           }

@@ -16,12 +16,12 @@ namespace ndda
 {
   struct LinearSolver::Implementation
   {
-    SparseDirectUMFPACK                     umfpack;
-    TrilinosWrappers::SparseMatrix          trilinos_matrix;
-    SolverControl                           direct_control{1, 0};
+    SparseDirectUMFPACK                             umfpack;
+    TrilinosWrappers::SparseMatrix                  trilinos_matrix;
+    SolverControl                                   direct_control{1, 0};
     std::unique_ptr<TrilinosWrappers::SolverDirect> klu;
-    TrilinosWrappers::PreconditionAMG       amg;
-    IndexSet                                all;
+    TrilinosWrappers::PreconditionAMG               amg;
+    IndexSet                                        all;
   };
 
 

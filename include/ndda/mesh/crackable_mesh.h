@@ -56,7 +56,7 @@ namespace ndda
      * connected component), with material id @p material_of_tag(tag).
      */
     void
-    read_msh(const std::string                             &filename,
+    read_msh(const std::string                               &filename,
              const std::function<unsigned int(unsigned int)> &material_of_tag);
 
     /** The triangulation. */
@@ -101,6 +101,16 @@ namespace ndda
     /** Smallest and largest coordinates of all vertices. */
     std::pair<Point<2>, Point<2>>
     bounding_box() const;
+
+    /**
+     * The active cell that contains @p p (on its boundary counts) and the
+     * point's coordinates on the reference triangle, found from barycentric
+     * coordinates on the current vertex positions. Returns
+     * numbers::invalid_unsigned_int as cell if no cell contains @p p.
+     * Linear in the number of cells: meant for setup, not for time steps.
+     */
+    std::pair<unsigned int, Point<2>>
+    locate(const Point<2> &p) const;
 
     /** Total area of all cells. */
     double

@@ -278,8 +278,7 @@ namespace ndda
       static void
       declare_parameters(ParameterHandler &prm);
       void
-      parse_parameters(ParameterHandler  &prm,
-                       const std::string &scene_name);
+      parse_parameters(ParameterHandler &prm, const std::string &scene_name);
     };
 
     /**

@@ -78,12 +78,12 @@ namespace ndda
      * computed.
      */
     unsigned int
-    update(const DoFHandler<dim>        &dof_handler,
-           const Mapping<dim>           &mapping,
-           const Quadrature<dim>        &quadrature,
-           const parameters::Materials  &materials,
-           const bool                    only_moved_cells,
-           const double                  tolerance);
+    update(const DoFHandler<dim>       &dof_handler,
+           const Mapping<dim>          &mapping,
+           const Quadrature<dim>       &quadrature,
+           const parameters::Materials &materials,
+           const bool                   only_moved_cells,
+           const double                 tolerance);
 
     const CellData &
     operator[](const unsigned int cell) const
@@ -105,9 +105,9 @@ namespace ndda
     }
 
   private:
-    std::vector<CellData>                 data;
-    std::vector<SymmetricTensor<4, dim>>  elasticity;
-    unsigned int                          n_q_points = 0;
+    std::vector<CellData>                data;
+    std::vector<SymmetricTensor<4, dim>> elasticity;
+    unsigned int                         n_q_points = 0;
   };
 } // namespace ndda
 

@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Node splitting along marked edges of a plain triangle mesh (DESIGN.md,
+// decision 6): the triangles around a vertex are grouped into fans that are
+// connected through edges that are not split; every fan gets its own copy
+// of the vertex. No CGAL in here: the fracture layer uses the same function
+// on meshes that never went through the mesher.
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/types.h>
+
+#include <ndda/geometry/block_mesh.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ndda
+{
+  namespace geometry
+  {
+    namespace
+    {
+      /**
+       * Key of an undirected edge: the smaller vertex index in the high
+       * bits, so that sorting the keys sorts the edges lexicographically.
+       */
+      std::uint64_t
+      edge_key(const unsigned int a, const unsigned int b)
+      {
+        const std::uint64_t lo = std::min(a, b);
+        const std::uint64_t hi = std::max(a, b);
+        return (lo << 32) | hi;
+      }
+
+
+      std::string
+      edge_to_string(const unsigned int a, const unsigned int b)
+      {
+        std::ostringstream s;
+        s << "(" << a << ", " << b << ")";
+        return s.str();
+      }
+
+
+      /**
+       * Union-find with path halving and union by index: the root of a set
+       * is always its smallest member, which keeps the numbering of the new
+       * vertices independent of the order of the unions.
+       */
+      class DisjointSets
+      {
+      public:
+        explicit DisjointSets(const std::size_t n)
+          : parent(n)
+        {
+          std::iota(parent.begin(), parent.end(), 0u);
+        }
+
+        unsigned int
+        find(unsigned int i)
+        {
+          while (parent[i] != i)
+            {
+              parent[i] = parent[parent[i]];
+              i         = parent[i];
+            }
+          return i;
+        }
+
+        void
+        join(const unsigned int i, const unsigned int j)
+        {
+          const unsigned int ri = find(i);
+          const unsigned int rj = find(j);
+          if (ri < rj)
+            parent[rj] = ri;
+          else if (rj < ri)
+            parent[ri] = rj;
+        }
+
+      private:
+        std::vector<unsigned int> parent;
+      };
+    } // namespace
+
+
+
+    std::vector<unsigned int>
+    split_vertices_along_edges(
+      BlockMesh                                      &mesh,
+      const std::vector<std::array<unsigned int, 2>> &edges)
+    {
+      const unsigned int n_vertices = mesh.vertices.size();
+      const unsigned int n_cells    = mesh.triangles.size();
+
+      for (unsigned int c = 0; c < n_cells; ++c)
+        for (const unsigned int v : mesh.triangles[c])
+          AssertThrow(v < n_vertices,
+                      dealii::ExcMessage(
+                        "split_vertices_along_edges: triangle " +
+                        std::to_string(c) + " refers to vertex " +
+                        std::to_string(v) + ", but the mesh has only " +
+                        std::to_string(n_vertices) + " vertices."));
+
+      // All triangle sides, sorted by edge. Side j of triangle c joins its
+      // local vertices j and (j+1)%3 and has the id 3c+j; the corner of
+      // local vertex j has the same id.
+      std::vector<std::pair<std::uint64_t, unsigned int>> sides;
+      sides.reserve(3 * std::size_t(n_cells));
+      for (unsigned int c = 0; c < n_cells; ++c)
+        for (unsigned int j = 0; j < 3; ++j)
+          sides.emplace_back(edge_key(mesh.triangles[c][j],
+                                      mesh.triangles[c][(j + 1) % 3]),
+                             3 * c + j);
+      std::sort(sides.begin(), sides.end());
+
+      const auto find_edge = [&](const std::uint64_t key) {
+        return std::lower_bound(sides.begin(),
+                                sides.end(),
+                                std::make_pair(key, 0u));
+      };
+
+      // The edges to split, and the edges that are crack faces already
+      // (from an earlier split): both end up in crack_edges.
+      std::vector<std::uint64_t> split_keys;
+      split_keys.reserve(edges.size());
+      std::vector<bool> on_split_edge(n_vertices, false);
+      for (const auto &e : edges)
+        {
+          AssertThrow(e[0] != e[1] && e[0] < n_vertices && e[1] < n_vertices,
+                      dealii::ExcMessage(
+                        "split_vertices_along_edges: the edge " +
+                        edge_to_string(e[0], e[1]) +
+                        " is not a pair of two different vertices of the "
+                        "mesh."));
+          const std::uint64_t key = edge_key(e[0], e[1]);
+          const auto          it  = find_edge(key);
+          AssertThrow(it != sides.end() && it->first == key,
+                      dealii::ExcMessage(
+                        "split_vertices_along_edges: the edge " +
+                        edge_to_string(e[0], e[1]) +
+                        " is not a side of any triangle of the mesh."));
+          split_keys.push_back(key);
+          on_split_edge[e[0]] = true;
+          on_split_edge[e[1]] = true;
+        }
+      std::sort(split_keys.begin(), split_keys.end());
+      split_keys.erase(std::unique(split_keys.begin(), split_keys.end()),
+                       split_keys.end());
+
+      std::vector<std::uint64_t> crack_keys = split_keys;
+      for (const auto &e : mesh.crack_edges)
+        {
+          const std::uint64_t key = edge_key(e[0], e[1]);
+          const auto          it  = find_edge(key);
+          AssertThrow(it != sides.end() && it->first == key,
+                      dealii::ExcMessage(
+                        "split_vertices_along_edges: the crack edge " +
+                        edge_to_string(e[0], e[1]) +
+                        " stored in the mesh is not a side of any "
+                        "triangle."));
+          crack_keys.push_back(key);
+        }
+      std::sort(crack_keys.begin(), crack_keys.end());
+      crack_keys.erase(std::unique(crack_keys.begin(), crack_keys.end()),
+                       crack_keys.end());
+
+      // Connect the corners of two triangles that share an edge that is not
+      // split: the corners at the same vertex then belong to the same fan.
+      DisjointSets fans(3 * std::size_t(n_cells));
+      const auto   corner_of = [&](const unsigned int side,
+                                 const unsigned int vertex) {
+        const unsigned int c = side / 3;
+        for (unsigned int j = 0; j < 3; ++j)
+          if (mesh.triangles[c][j] == vertex)
+            return 3 * c + j;
+        Assert(false, dealii::ExcInternalError());
+        return 3 * c;
+      };
+      for (std::size_t i = 0; i < sides.size();)
+        {
+          std::size_t end = i + 1;
+          while (end < sides.size() && sides[end].first == sides[i].first)
+            ++end;
+          const unsigned int a = sides[i].first >> 32;
+          const unsigned int b = sides[i].first & 0xffffffffu;
+          AssertThrow(end - i <= 2,
+                      dealii::ExcMessage(
+                        "split_vertices_along_edges: the edge " +
+                        edge_to_string(a, b) + " is shared by " +
+                        std::to_string(end - i) +
+                        " triangles; a valid mesh has at most two."));
+          if (end - i == 2 && !std::binary_search(split_keys.begin(),
+                                                  split_keys.end(),
+                                                  sides[i].first))
+            for (const unsigned int v : {a, b})
+              if (on_split_edge[v])
+                fans.join(corner_of(sides[i].second, v),
+                          corner_of(sides[i + 1].second, v));
+          i = end;
+        }
+
+      // Number the fans. Corners are visited in increasing order, so the
+      // fan with the lowest corner keeps the original vertex and the others
+      // get new vertices in the order of their lowest corner: the result
+      // does not depend on anything but the input.
+      std::vector<unsigned int> origin(n_vertices);
+      std::iota(origin.begin(), origin.end(), 0u);
+      std::vector<bool>         vertex_taken(n_vertices, false);
+      std::vector<unsigned int> fan_vertex(
+        3 * std::size_t(n_cells), dealii::numbers::invalid_unsigned_int);
+      for (unsigned int corner = 0; corner < 3 * n_cells; ++corner)
+        {
+          const unsigned int v = mesh.triangles[corner / 3][corner % 3];
+          if (!on_split_edge[v])
+            continue;
+          const unsigned int root = fans.find(corner);
+          if (fan_vertex[root] == dealii::numbers::invalid_unsigned_int)
+            {
+              if (!vertex_taken[v])
+                {
+                  fan_vertex[root] = v;
+                  vertex_taken[v]  = true;
+                }
+              else
+                {
+                  fan_vertex[root] = origin.size();
+                  origin.push_back(v);
+                  mesh.vertices.push_back(mesh.vertices[v]);
+                }
+            }
+          mesh.triangles[corner / 3][corner % 3] = fan_vertex[root];
+        }
+
+      // Every side of a triangle whose edge was split or was a crack face
+      // before is a crack face now. Sides keep the orientation of their
+      // triangle, so the body lies to the left of every crack edge.
+      mesh.crack_edges.clear();
+      for (const auto &side : sides)
+        if (std::binary_search(crack_keys.begin(),
+                               crack_keys.end(),
+                               side.first))
+          {
+            const unsigned int c = side.second / 3;
+            const unsigned int j = side.second % 3;
+            mesh.crack_edges.push_back(
+              {{mesh.triangles[c][j], mesh.triangles[c][(j + 1) % 3]}});
+          }
+
+      return origin;
+    }
+  } // namespace geometry
+} // namespace ndda

@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// mesh_scene() refuses invalid geometry with a message that names the block
+// or region, says what is wrong, gives the offending values and how to fix
+// it. Every case below is one scene with one defect (next to a valid
+// block, so that the message has to name the right one); the test checks
+// that an exception is thrown and that its message contains the name and
+// the key phrase, and prints the message. Two valid scenes (touching
+// blocks, a block inside the hole of a region) must not throw.
+
+#include <deal.II/base/exceptions.h>
+
+#include <ndda/geometry/block_mesh.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace ndda::geometry;
+using dealii::Point;
+
+namespace
+{
+  unsigned int n_failures = 0;
+
+  std::vector<Point<2>>
+  rectangle(const double x0, const double y0, const double x1, const double y1)
+  {
+    return {Point<2>(x0, y0),
+            Point<2>(x1, y0),
+            Point<2>(x1, y1),
+            Point<2>(x0, y1)};
+  }
+
+
+  BlockDescription
+  block(const std::string &name, const std::vector<Point<2>> &outer)
+  {
+    BlockDescription b;
+    b.name      = name;
+    b.outer     = outer;
+    b.mesh_size = 0.5;
+    return b;
+  }
+
+
+  /** A scene with a valid block "good" far away from everything else. */
+  SceneGeometry
+  scene_with(const BlockDescription &b)
+  {
+    SceneGeometry scene;
+    scene.blocks = {block("good", rectangle(100, 100, 101, 101)), b};
+    return scene;
+  }
+
+
+  SceneGeometry
+  scene_with(const RegionDescription &r)
+  {
+    SceneGeometry scene;
+    scene.blocks  = {block("good", rectangle(100, 100, 101, 101))};
+    scene.regions = {r};
+    return scene;
+  }
+
+
+  void
+  expect_error(const std::string              &name,
+               const SceneGeometry            &scene,
+               const std::vector<std::string> &phrases)
+  {
+    std::string message;
+    try
+      {
+        mesh_scene(scene);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream s;
+        e.print_info(s);
+        message = s.str();
+      }
+    // print_info indents the message; drop the indentation.
+    message.erase(0, message.find_first_not_of(" "));
+    while (!message.empty() && message.back() == '\n')
+      message.pop_back();
+    std::cout << name << ": " << message << std::endl;
+    if (message.empty())
+      {
+        std::cerr << "FAILED: " << name << ": no exception" << std::endl;
+        ++n_failures;
+        return;
+      }
+    for (const auto &phrase : phrases)
+      if (message.find(phrase) == std::string::npos)
+        {
+          std::cerr << "FAILED: " << name << ": the message lacks '" << phrase
+                    << "'" << std::endl;
+          ++n_failures;
+        }
+  }
+
+
+  void
+  expect_success(const std::string &name, const SceneGeometry &scene)
+  {
+    try
+      {
+        const BlockMesh mesh = mesh_scene(scene);
+        std::cout << name << ": accepted, " << mesh.block_names.size()
+                  << " blocks" << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "FAILED: " << name << ": " << e.what() << std::endl;
+        ++n_failures;
+      }
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  expect_error(
+    "two points",
+    scene_with(
+      block("sliver", {Point<2>(0, 0), Point<2>(1, 0), Point<2>(0, 0)})),
+    {"Geometry: block 'sliver': ",
+     "polygon is not closed: it needs at least three distinct points"});
+
+  expect_error(
+    "duplicate point",
+    scene_with(block(
+      "dup", {Point<2>(0, 0), Point<2>(1, 0), Point<2>(1, 0), Point<2>(1, 1)})),
+    {"Geometry: block 'dup': ", "consecutive duplicate", "(1, 0)"});
+
+  expect_error(
+    "self-intersection",
+    scene_with(
+      block("bowtie",
+            {Point<2>(0, 0), Point<2>(1, 1), Point<2>(1, 0), Point<2>(0, 1)})),
+    {"Geometry: block 'bowtie': ", "self-intersecting", "(0.5, 0.5)"});
+
+  expect_error(
+    "zero area",
+    scene_with(
+      block("line",
+            {Point<2>(0, 0), Point<2>(1, 0), Point<2>(2, 0), Point<2>(3, 0)})),
+    {"Geometry: block 'line': ", "zero area"});
+
+  {
+    BlockDescription b = block("holey", rectangle(0, 0, 1, 1));
+    b.holes            = {rectangle(0.5, 0.25, 1.5, 0.75)};
+    expect_error("hole crossing the outer ring",
+                 scene_with(b),
+                 {"Geometry: block 'holey': ",
+                  "hole 0 is not strictly inside the outer ring"});
+    b.holes = {rectangle(2, 2, 3, 3)};
+    expect_error("hole outside",
+                 scene_with(b),
+                 {"Geometry: block 'holey': ",
+                  "hole 0 is not strictly inside the outer ring",
+                  "(2, 2)"});
+    b.holes = {rectangle(0.25, 0.25, 0.5, 0.5),
+               rectangle(0.4, 0.4, 0.75, 0.75)};
+    expect_error("overlapping holes",
+                 scene_with(b),
+                 {"Geometry: block 'holey': ", "holes 0 and 1 overlap"});
+    b.holes = {rectangle(0.2, 0.2, 0.8, 0.8), rectangle(0.4, 0.4, 0.6, 0.6)};
+    expect_error("hole in a hole",
+                 scene_with(b),
+                 {"Geometry: block 'holey': ", "holes 0 and 1 overlap"});
+  }
+
+  {
+    BlockDescription b = block("cracky", rectangle(0, 0, 1, 1));
+    b.cracks           = {{Point<2>(0.5, 0.5), Point<2>(1.5, 0.5)}};
+    expect_error("crack leaving the block",
+                 scene_with(b),
+                 {"Geometry: block 'cracky': ",
+                  "crack 0 from (0.5, 0.5) to (1.5, 0.5) is not inside the "
+                  "block"});
+    b.holes  = {rectangle(0.4, 0.4, 0.6, 0.6)};
+    b.cracks = {{Point<2>(0.2, 0.5), Point<2>(0.8, 0.5)}};
+    expect_error("crack through a hole",
+                 scene_with(b),
+                 {"Geometry: block 'cracky': ", "is not inside the block"});
+    b.holes  = {};
+    b.cracks = {{Point<2>(0, 0.2), Point<2>(0, 0.8)}};
+    expect_error("crack along the boundary",
+                 scene_with(b),
+                 {"Geometry: block 'cracky': ",
+                  "is not inside the block: it runs along the block "
+                  "boundary"});
+    b.cracks = {{Point<2>(0.5, 0.5), Point<2>(0.5, 0.5)}};
+    expect_error("zero-length crack",
+                 scene_with(b),
+                 {"Geometry: block 'cracky': ", "zero length", "(0.5, 0.5)"});
+  }
+
+  {
+    SceneGeometry scene = scene_with(block("left", rectangle(0, 0, 1, 1)));
+    scene.blocks.push_back(block("right", rectangle(0.5, 0.5, 2, 2)));
+    expect_error("overlapping blocks",
+                 scene,
+                 {"Geometry: block 'left': ", "overlaps block 'right'"});
+
+    RegionDescription r;
+    r.name      = "rock";
+    r.outer     = rectangle(1.5, 0, 3, 1);
+    r.mesh_size = 0.5;
+    scene       = scene_with(r);
+    scene.blocks.push_back(block("inside", rectangle(2, 0.2, 2.5, 0.8)));
+    expect_error("block inside a region",
+                 scene,
+                 {"Geometry: block 'inside': ", "overlaps region 'rock'"});
+  }
+
+  {
+    BlockDescription b = block("unsized", rectangle(0, 0, 1, 1));
+    b.mesh_size        = 0.;
+    b.target_n_cells   = 0;
+    expect_error("no mesh size",
+                 scene_with(b),
+                 {"Geometry: block 'unsized': ",
+                  "neither a mesh size nor a target number of cells"});
+  }
+
+  {
+    RegionDescription r;
+    r.name  = "twisted";
+    r.outer = {Point<2>(0, 0), Point<2>(2, 2), Point<2>(2, 0), Point<2>(0, 2)};
+    r.mesh_size = 0.5;
+    expect_error(
+      "self-intersecting region",
+      scene_with(r),
+      {"Geometry: region 'twisted': ", "self-intersecting", "(1, 1)"});
+    r.name   = "jointed";
+    r.outer  = rectangle(0, 0, 1, 1);
+    r.joints = {{Point<2>(0.3, 0.3), Point<2>(0.3, 0.3)}};
+    expect_error("zero-length joint",
+                 scene_with(r),
+                 {"Geometry: region 'jointed': ", "joint 0", "zero length"});
+  }
+
+  // Valid scenes.
+  {
+    SceneGeometry scene = scene_with(block("left", rectangle(0, 0, 1, 1)));
+    scene.blocks.push_back(block("right", rectangle(1, 0.5, 2, 1.5)));
+    scene.blocks.push_back(block("corner", rectangle(2, 1.5, 3, 2.5)));
+    expect_success("touching blocks", scene);
+
+    RegionDescription r;
+    r.name      = "frame";
+    r.outer     = rectangle(0, 0, 3, 3);
+    r.holes     = {rectangle(1, 1, 2, 2)};
+    r.joints    = {{Point<2>(-1, 1.5), Point<2>(4, 1.5)}};
+    r.mesh_size = 0.5;
+    scene       = scene_with(r);
+    scene.blocks.push_back(block("core", rectangle(1, 1, 2, 2)));
+    expect_success("block in the hole of a region", scene);
+  }
+
+  std::cout << (n_failures == 0 ? "OK" : "FAILED") << std::endl;
+  return n_failures == 0 ? 0 : 1;
+}
