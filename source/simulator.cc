@@ -159,7 +159,7 @@ namespace ndda
                                  std::to_string(tag) +
                                  ", which is not listed. Give a material "
                                  "for every physical surface."));
-          return 0u;
+          return tag;
         };
         mesh.read_msh(geometry.mesh_file, material_of_tag);
       }

@@ -572,9 +572,9 @@ namespace ndda
                         "",
                         Patterns::Anything(),
                         "Material of each physical surface of the mesh "
-                        "file, 'tag: material, tag: material'. Empty: "
-                        "material id = index of the tag in Materials/Names "
-                        "order is not used, the first material is used.");
+                        "file, 'tag: material, tag: material'. Empty: the "
+                        "physical tag is the material id, an index into "
+                        "Materials/Names (0 is the first).");
       prm.declare_entry("Minimum angle",
                         "30",
                         Patterns::Double(10., 33.),
