@@ -40,7 +40,7 @@ main(int argc, char **argv)
 
       // 2. The rest of the scene as a .prm text (or a file): no Geometry
       //    section. The material ids of the mesh index Materials/Names.
-      const std::string scene = R"(
+      const std::string            scene = R"(
         set Scene name = triangulation_input
         subsection Control
           set Time step = 0.01
