@@ -81,6 +81,18 @@ namespace ndda
       return function;
     }
 
+    /** cos and sin of a small angle, by series where that is exact. */
+    std::pair<double, double>
+    cos_sin(const double omega)
+    {
+      if (std::abs(omega) > 1e-2)
+        return {std::cos(omega), std::sin(omega)};
+      // Truncation below 1e-15 for |omega| <= 1e-2.
+      const double w2 = omega * omega;
+      return {1. - w2 / 2. * (1. - w2 / 12. * (1. - w2 / 30.)),
+              omega * (1. - w2 / 6. * (1. - w2 / 20.))};
+    }
+
     /** Rotate the 2D vector stored at dofs (i, j) by the angle omega. */
     void
     rotate_pair(Vector<double>               &v,
@@ -280,8 +292,7 @@ namespace ndda
   Simulator<dim>::setup_dofs()
   {
     const unsigned int degree = parameters.control.element_degree;
-    fe         = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
-    quadrature = std::make_unique<QGaussSimplex<dim>>(degree + 1);
+    fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
     face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
     dof_handler.distribute_dofs(*fe);
 
@@ -329,8 +340,7 @@ namespace ndda
     for (unsigned int d = 0; d < dim; ++d)
       gravity_load[d].reinit(n);
 
-    element_cache.update(
-      dof_handler, mapping, *quadrature, parameters.materials, false, 0.);
+    element_cache.update(dof_handler, mapping, parameters.materials, false, 0.);
     double max_modulus = 0;
     for (const auto &m : parameters.materials.materials)
       max_modulus = std::max(max_modulus, m.youngs_modulus);
@@ -858,7 +868,6 @@ namespace ndda
     const unsigned int n_computed =
       element_cache.update(dof_handler,
                            mapping,
-                           *quadrature,
                            parameters.materials,
                            only_moved_cells && tolerance > 0.,
                            tolerance);
@@ -1060,9 +1069,12 @@ namespace ndda
       {
         // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies
         // the homogeneous constraints, so the factorization stays valid.
-        Vector<double> tmp(dof_handler.n_dofs());
-        system_matrix.vmult(tmp, prescribed);
-        rhs -= tmp;
+        if (!node_constraints.empty())
+          {
+            Vector<double> tmp(dof_handler.n_dofs());
+            system_matrix.vmult(tmp, prescribed);
+            rhs -= tmp;
+          }
         constraints.condense(rhs);
         last_solver_iterations = linear_solver->solve(d, rhs);
         constraints.distribute(d);
@@ -1210,7 +1222,7 @@ namespace ndda
         if (omega != 0.)
           {
             // sigma <- R sigma R^T
-            const double cs = std::cos(omega), sn = std::sin(omega);
+            const auto [cs, sn] = cos_sin(omega);
             for (auto &sigma : stress[c])
               {
                 const double xx = sigma[0][0], yy = sigma[1][1],
@@ -1232,8 +1244,8 @@ namespace ndda
         const double omega = node_spin[n] / node_weight[n];
         if (omega == 0.)
           continue;
-        const double cs = std::cos(omega), sn = std::sin(omega);
-        const auto [i, j] = node_dofs[n];
+        const auto [cs, sn] = cos_sin(omega);
+        const auto [i, j]   = node_dofs[n];
         rotate_pair(velocity, i, j, cs, sn);
         rotate_pair(acceleration, i, j, cs, sn);
         rotate_pair(internal_force, i, j, cs, sn);

@@ -327,7 +327,6 @@ namespace ndda
     CrackableMesh                        mesh;
     std::unique_ptr<FESystem<dim>>       fe;
     MappingFE<dim>                       mapping;
-    std::unique_ptr<Quadrature<dim>>     quadrature;
     std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
     DoFHandler<dim>                      dof_handler;
 

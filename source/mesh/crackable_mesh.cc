@@ -266,20 +266,18 @@ namespace ndda
   CrackableMesh::move_vertices(const std::vector<Tensor<1, 2>> &displacement)
   {
     AssertDimension(displacement.size(), triangulation.n_vertices());
-    // The triangulation's vertices are changed through the cells, as in
-    // step-18: each vertex once.
-    std::vector<bool> moved(triangulation.n_vertices(), false);
-    for (const auto &cell : triangulation.active_cell_iterators())
-      for (unsigned int v = 0; v < 3; ++v)
-        {
-          const unsigned int i = cell->vertex_index(v);
-          if (!moved[i])
-            {
-              cell->vertex(v) += displacement[i];
-              block_mesh.vertices[i] += displacement[i];
-              moved[i] = true;
-            }
-        }
+    // deal.II has no mutable access to its vertex array but through cell
+    // accessors (step-18), which cost more than the whole stress update of
+    // a P1 step. get_vertices() returns a reference to the triangulation's
+    // own vertex vector; writing through it changes nothing else (no
+    // cached geometry is kept by Triangulation<2> with a linear mapping).
+    auto &vertices =
+      const_cast<std::vector<Point<2>> &>(triangulation.get_vertices());
+    for (unsigned int i = 0; i < vertices.size(); ++i)
+      {
+        vertices[i] += displacement[i];
+        block_mesh.vertices[i] += displacement[i];
+      }
   }
 
 

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <ndda/physics/element_cache.h>
@@ -30,14 +32,17 @@ namespace ndda
   unsigned int
   ElementCache<dim>::update(const DoFHandler<dim>       &dof_handler,
                             const Mapping<dim>          &mapping,
-                            const Quadrature<dim>       &quadrature,
                             const parameters::Materials &materials,
                             const bool                   only_moved_cells,
                             const double                 tolerance)
   {
     const auto        &fe     = dof_handler.get_fe();
     const unsigned int n_dofs = fe.n_dofs_per_cell();
-    n_q_points                = quadrature.size();
+    // Strain, stress and stiffness need degree 2 (p - 1) (one point for
+    // P1, whose strain is constant); the consistent mass needs degree 2 p.
+    const QGaussSimplex<dim> quadrature(fe.degree);
+    const QGaussSimplex<dim> mass_quadrature(fe.degree + 1);
+    n_q_points = quadrature.size();
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
     if (data.size() != n_cells)
@@ -54,8 +59,11 @@ namespace ndda
     FEValues<dim>                    fe_values(mapping,
                             fe,
                             quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
+                            update_gradients | update_JxW_values);
+    FEValues<dim>                    mass_values(mapping,
+                              fe,
+                              mass_quadrature,
+                              update_values | update_JxW_values);
     const FEValuesExtractors::Vector u(0);
     const double                     t = materials.thickness;
 
@@ -80,6 +88,7 @@ namespace ndda
           }
         ++n_computed;
         fe_values.reinit(cell);
+        mass_values.reinit(cell);
         const auto &material = materials.materials[cell->material_id()];
         const auto &C        = elasticity[cell->material_id()];
 
@@ -112,17 +121,19 @@ namespace ndda
               {
                 const SymmetricTensor<2, dim> Ceps_i =
                   C * d.strain[q * n_dofs + i];
-                const Tensor<1, dim> phi_i = fe_values[u].value(i, q);
                 for (unsigned int j = 0; j < n_dofs; ++j)
-                  {
-                    d.stiffness(i, j) +=
-                      (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
-                    d.mass(i, j) += density *
-                                    (phi_i * fe_values[u].value(j, q)) *
-                                    d.weight[q];
-                  }
+                  d.stiffness(i, j) +=
+                    (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
               }
           }
+        for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const Tensor<1, dim> phi_i = mass_values[u].value(i, q);
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                d.mass(i, j) += density * t * mass_values.JxW(q) *
+                                (phi_i * mass_values[u].value(j, q));
+            }
         d.vertices.resize(cell->n_vertices());
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)
           d.vertices[v] = cell->vertex(v);

@@ -41,9 +41,11 @@ namespace ndda
    * - stiffness: t * int B^T C B (thesis 3.24),
    * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
    *   time-step factor), with rho scaled to keep the cell's initial mass,
-   * - at every quadrature point, the strain and the spin of each shape
-   *   function and t * JxW, so that stress updates, internal forces and
-   *   local rotations need no FEValues in the time loop.
+   * - at every quadrature point of QGaussSimplex(p) (one point for P1,
+   *   whose strain is constant; the stress lives at these points), the
+   *   strain and the spin of each shape function and t * JxW, so that
+   *   stress updates, internal forces and local rotations need no FEValues
+   *   in the time loop. The mass matrix uses QGaussSimplex(p + 1).
    *
    * @ingroup physics
    */
@@ -80,7 +82,6 @@ namespace ndda
     unsigned int
     update(const DoFHandler<dim>       &dof_handler,
            const Mapping<dim>          &mapping,
-           const Quadrature<dim>       &quadrature,
            const parameters::Materials &materials,
            const bool                   only_moved_cells,
            const double                 tolerance);
