@@ -416,6 +416,8 @@ namespace ndda
       }
     std::vector<Point<dim>> support_points(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+    if (parameters.control.linear_solver == parameters::LinearSolver::cg_amg)
+      linear_solver->set_rigid_body_modes(support_points, component);
 
     // Boundary nodes, for constraints on segments.
     std::vector<bool> on_boundary(dof_handler.n_dofs(), false);

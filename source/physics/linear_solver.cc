@@ -11,6 +11,8 @@
 
 #include <ndda/physics/linear_solver.h>
 
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <suitesparse/umfpack.h>
 
@@ -140,6 +142,10 @@ namespace ndda
     std::unique_ptr<TrilinosWrappers::SolverDirect> klu;
     TrilinosWrappers::PreconditionAMG               amg;
     IndexSet                                        all;
+    /// Rigid-body modes for ML, column after column (kept alive: ML keeps
+    /// a pointer to them).
+    std::vector<double>    null_space;
+    Teuchos::ParameterList ml_parameters;
   };
 
 
@@ -154,6 +160,23 @@ namespace ndda
 
 
   LinearSolver::~LinearSolver() = default;
+
+
+
+  void
+  LinearSolver::set_rigid_body_modes(const std::vector<Point<2>>     &location,
+                                     const std::vector<unsigned int> &component)
+  {
+    const unsigned int n = location.size();
+    rigid_body_modes.assign(3 * n, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        rigid_body_modes[0 * n + i] = (component[i] == 0 ? 1. : 0.);
+        rigid_body_modes[1 * n + i] = (component[i] == 1 ? 1. : 0.);
+        rigid_body_modes[2 * n + i] =
+          (component[i] == 0 ? -location[i][1] : location[i][0]);
+      }
+  }
 
 
 
@@ -186,7 +209,26 @@ namespace ndda
             data.higher_order_elements = false;
             data.smoother_sweeps       = 2;
             data.aggregation_threshold = 0.02;
-            impl.amg.initialize(impl.trilinos_matrix, data);
+            if (rigid_body_modes.empty())
+              impl.amg.initialize(impl.trilinos_matrix, data);
+            else
+              {
+                // Elasticity: the null space of the stiffness holds two
+                // translations and the rotation (-y, x); deal.II's
+                // constant modes give only the translations.
+                impl.ml_parameters = Teuchos::ParameterList();
+                std::unique_ptr<Epetra_MultiVector> unused;
+                data.set_parameters(impl.ml_parameters,
+                                    unused,
+                                    impl.trilinos_matrix);
+                impl.null_space   = rigid_body_modes;
+                const int n_modes = rigid_body_modes.size() / matrix.m();
+                impl.ml_parameters.set("null space: type", "pre-computed");
+                impl.ml_parameters.set("null space: dimension", n_modes);
+                impl.ml_parameters.set("null space: vectors",
+                                       impl.null_space.data());
+                impl.amg.initialize(impl.trilinos_matrix, impl.ml_parameters);
+              }
           }
       }
     catch (const ExceptionBase &exc)

@@ -2,6 +2,8 @@
 #ifndef ndda_physics_linear_solver_h
 #define ndda_physics_linear_solver_h
 
+#include <deal.II/base/point.h>
+
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -29,6 +31,15 @@ namespace ndda
     LinearSolver(const parameters::LinearSolver type, const double tolerance);
     ~LinearSolver();
 
+    /**
+     * Give CG-AMG the rigid-body modes (two translations and the rotation)
+     * as the near null space of the operator, from the location and vector
+     * component of every dof. Without it, ML sees translations only.
+     */
+    void
+    set_rigid_body_modes(const std::vector<Point<2>>     &location,
+                         const std::vector<unsigned int> &component);
+
     /** Prepare for solves with @p matrix (kept by reference for CG). */
     void
     factorize(const SparseMatrix<double> &matrix);
@@ -53,6 +64,7 @@ namespace ndda
     const parameters::LinearSolver  type;
     const double                    tolerance;
     std::unique_ptr<Implementation> implementation;
+    std::vector<double>             rigid_body_modes;
     unsigned int                    factorization_count = 0;
   };
 } // namespace ndda
