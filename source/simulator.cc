@@ -882,15 +882,9 @@ namespace ndda
     // Gravity load vectors: M times a unit acceleration.
     for (unsigned int d = 0; d < dim; ++d)
       {
-        Vector<double>                       unit(dof_handler.n_dofs());
-        std::vector<types::global_dof_index> dofs(fe->n_dofs_per_cell());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (fe->system_to_component_index(i).first == d)
-                unit[dofs[i]] = 1.;
-          }
+        Vector<double> unit(dof_handler.n_dofs());
+        for (const auto &dofs : node_dofs)
+          unit[dofs[d]] = 1.;
         mass_matrix.vmult(gravity_load[d], unit);
       }
     compute_internal_force();
