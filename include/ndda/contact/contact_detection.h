@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_contact_contact_detection_h
+#define ndda_contact_contact_detection_h
+
+#include <deal.II/base/point.h>
+
+#include <ndda/geometry/block_mesh.h>
+
+#include <vector>
+
+namespace ndda
+{
+  /**
+   * Contact between blocks (and between the faces of a crack or a notch of
+   * one block): detection first. This is the first slice of the contact
+   * layer: it finds the vertex-edge and vertex-vertex candidates of one time
+   * step as plain data. The contact kernels (normal and shear springs,
+   * friction), the contact state carried from step to step, the
+   * vertex-vertex resolution of chapter 6 of the thesis, and the open-close
+   * iteration come next and build on these candidates.
+   *
+   * Detection has two phases:
+   * - broad phase: one axis-aligned box per boundary edge, grown by the
+   *   detection threshold, packed into a boost R-tree through deal.II's
+   *   pack_rtree(); each edge queries the tree with its own (not grown)
+   *   box, so a pair of edges is reported exactly when their boxes are at
+   *   most the threshold apart along each axis. Cost O(n log n) for n
+   *   boundary edges (plus the number of reported pairs).
+   * - narrow phase: for every reported pair of edges that share no vertex,
+   *   each end vertex of one edge is tested against the other edge
+   *   (vertex_edge_candidate()). Edge-edge contact is two vertex-edge
+   *   contacts.
+   *
+   * Nothing here depends on the Simulator or on a Triangulation.
+   *
+   * @ingroup contact
+   */
+  namespace contact
+  {
+    using dealii::Point;
+
+    /**
+     * A boundary edge of the mesh: an edge used by exactly one triangle,
+     * oriented as in that triangle, so that going from v0 to v1 the body
+     * lies on the left (counter-clockwise around the block's outer boundary,
+     * clockwise around holes, and the two faces of a crack run in opposite
+     * directions).
+     */
+    struct BoundaryEdge
+    {
+      /// First vertex (index into the mesh's vertices).
+      unsigned int v0;
+      /// Second vertex.
+      unsigned int v1;
+      /// Block of the triangle the edge belongs to.
+      unsigned int block;
+    };
+
+    /**
+     * Kind of a contact candidate.
+     */
+    enum class CandidateType
+    {
+      /// The vertex projects into the interior of the edge.
+      vertex_edge,
+      /// The closest point of the edge is one of its end points: the
+      /// contact direction is not given by the edge alone (chapter 6).
+      vertex_vertex
+    };
+
+    /**
+     * A vertex close to a boundary edge it is not part of.
+     */
+    struct Candidate
+    {
+      /// The vertex (index into the vertices).
+      unsigned int vertex;
+      /// The edge (index into the boundary edges handed to detect()).
+      unsigned int edge;
+      /// vertex_edge or vertex_vertex, see vertex_edge_candidate().
+      CandidateType type;
+      /// Signed distance from the vertex to the closest point of the edge:
+      /// its length, positive when the vertex lies outside the edge's body
+      /// (on the right of v0->v1 or on its line), negative when it lies on
+      /// the left (penetration).
+      double distance;
+      /// Position of the vertex's projection on the edge, clamped to [0,1]:
+      /// 0 at v0, 1 at v1.
+      double edge_ratio;
+    };
+
+    /**
+     * Projection ratios within this distance of 0 or 1 make a candidate
+     * vertex_vertex.
+     */
+    constexpr double vertex_vertex_tolerance = 1e-9;
+
+    /**
+     * The boundary edges of @p mesh: every edge used by exactly one
+     * triangle, oriented as in that triangle, with that triangle's block.
+     * The order is deterministic: sorted by (v0, v1). Cost O(n log n) in
+     * the number of triangles.
+     *
+     * Throws dealii::ExcMessage if an edge is used by more than two
+     * triangles.
+     */
+    std::vector<BoundaryEdge>
+    boundary_edges(const geometry::BlockMesh &mesh);
+
+    /**
+     * Narrow-phase test of one vertex against one boundary edge.
+     *
+     * Computes the closest point of the segment edges[edge] to
+     * vertices[vertex]. If their distance is at most @p threshold, writes
+     * the candidate to @p candidate and returns true; it is a vertex_vertex
+     * candidate when the unclamped projection ratio lies outside
+     * (vertex_vertex_tolerance, 1 - vertex_vertex_tolerance), a vertex_edge
+     * candidate otherwise. Does not check whether the vertex is an end point
+     * of the edge; detect() never asks for that.
+     */
+    bool
+    vertex_edge_candidate(const std::vector<Point<2>>     &vertices,
+                          const unsigned int               vertex,
+                          const std::vector<BoundaryEdge> &edges,
+                          const unsigned int               edge,
+                          const double                     threshold,
+                          Candidate                       &candidate);
+
+    /**
+     * All contact candidates between the boundary edges @p edges with
+     * vertex positions @p vertices (the current, moved positions).
+     *
+     * Broad phase with an R-tree of edge boxes grown by @p threshold; narrow
+     * phase for every pair of edges within reach that share no vertex
+     * (edges of the same block count too: the faces of a crack, the sides
+     * of a concave notch): each end vertex of one edge is tested against
+     * the other edge with vertex_edge_candidate(). Duplicates (same vertex,
+     * same edge, found through both edges at the vertex) are removed; the
+     * result is sorted by vertex, then edge. Cost O(n log n) for n edges
+     * when every edge has a bounded number of neighbours within reach.
+     *
+     * @param vertices Vertex positions.
+     * @param edges Boundary edges, for example from boundary_edges().
+     * @param threshold Detection distance (m), non-negative.
+     */
+    std::vector<Candidate>
+    detect(const std::vector<Point<2>>     &vertices,
+           const std::vector<BoundaryEdge> &edges,
+           const double                     threshold);
+  } // namespace contact
+} // namespace ndda
+
+#endif
