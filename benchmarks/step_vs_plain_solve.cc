@@ -26,6 +26,12 @@
  *   are not in the plain total, as ndda's setup() is not in its first
  *   step. A second back-substitution with the same factorization ("plain
  *   re-solve") is the least a plain time-stepping code pays per step.
+ * - the same plain system once more, factorized and solved with UMFPACK
+ *   called directly with the settings ndda's LinearSolver uses (symmetric
+ *   strategy, no iterative refinement; SparseDirectUMFPACK uses UMFPACK's
+ *   defaults, whose iterative refinement costs at least one extra
+ *   residual per solve). The "matched" columns compare ndda with this, so
+ *   that solver settings and ndda's own overhead can be told apart.
  *
  * The comparison is only fair if both solve the same system. With zero
  * initial velocity, no initial stress and constant loads f, ndda's first
@@ -80,6 +86,7 @@
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <suitesparse/umfpack.h>
 #include <vector>
 
 using namespace dealii;
@@ -197,7 +204,97 @@ namespace
     double         resolve_time   = 0;
     double         peak_rss       = 0;
     Vector<double> solution;
+    /// UMFPACK with ndda's settings: factorization (including the copy to
+    /// UMFPACK's arrays), solve, one more solve, and the relative l2
+    /// difference of its solution to SparseDirectUMFPACK's.
+    double matched_factorize_time = 0;
+    double matched_solve_time     = 0;
+    double matched_resolve_time   = 0;
+    double matched_difference     = 0;
   };
+
+
+  void
+  check_umfpack(const SuiteSparse_long status, const std::string &what)
+  {
+    AssertThrow(status == UMFPACK_OK,
+                ExcMessage("UMFPACK " + what + " failed with status " +
+                           std::to_string(status) + "."));
+  }
+
+
+  /**
+   * Factorize and solve @p matrix x = @p rhs with UMFPACK called directly,
+   * set up as ndda's LinearSolver does it (symmetric strategy, no iterative
+   * refinement); the matrix is handed over by rows, i.e. as its transpose,
+   * and solved with UMFPACK_At, as SparseDirectUMFPACK does too.
+   */
+  void
+  matched_umfpack_solve(const SparseMatrix<double>      &matrix,
+                        const Vector<double>            &rhs,
+                        const AffineConstraints<double> &constraints,
+                        PlainResult                     &result)
+  {
+    auto                          start = Clock::now();
+    const SuiteSparse_long        n     = matrix.m();
+    std::vector<SuiteSparse_long> ap(n + 1, 0), ai;
+    std::vector<double>           ax;
+    ai.reserve(matrix.n_nonzero_elements());
+    ax.reserve(matrix.n_nonzero_elements());
+    std::vector<std::pair<SuiteSparse_long, double>> row;
+    for (SuiteSparse_long i = 0; i < n; ++i)
+      {
+        row.clear();
+        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+          row.emplace_back(entry->column(), entry->value());
+        std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
+          return a.first < b.first;
+        });
+        for (const auto &[j, value] : row)
+          {
+            ai.push_back(j);
+            ax.push_back(value);
+          }
+        ap[i + 1] = ai.size();
+      }
+    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
+    umfpack_dl_defaults(control);
+    control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+    control[UMFPACK_IRSTEP]   = 0;
+    void *symbolic = nullptr, *numeric = nullptr;
+    check_umfpack(
+      umfpack_dl_symbolic(
+        n, n, ap.data(), ai.data(), ax.data(), &symbolic, control, info),
+      "symbolic factorization");
+    check_umfpack(
+      umfpack_dl_numeric(
+        ap.data(), ai.data(), ax.data(), symbolic, &numeric, control, info),
+      "numeric factorization");
+    umfpack_dl_free_symbolic(&symbolic);
+    result.matched_factorize_time = seconds_since(start);
+
+    Vector<double> x(n);
+    for (double *time :
+         {&result.matched_solve_time, &result.matched_resolve_time})
+      {
+        start = Clock::now();
+        check_umfpack(umfpack_dl_solve(UMFPACK_At,
+                                       ap.data(),
+                                       ai.data(),
+                                       ax.data(),
+                                       x.begin(),
+                                       rhs.begin(),
+                                       numeric,
+                                       control,
+                                       info),
+                      "solve");
+        constraints.distribute(x);
+        *time = seconds_since(start);
+      }
+    umfpack_dl_free_numeric(&numeric);
+    x -= result.solution;
+    result.matched_difference = x.l2_norm() / result.solution.l2_norm();
+  }
 
 
   /**
@@ -322,25 +419,28 @@ namespace
       }
     result.assembly_time = seconds_since(start);
 
-    start = Clock::now();
-    SparseDirectUMFPACK solver;
-    solver.initialize(system_matrix);
-    result.factorize_time = seconds_since(start);
+    {
+      start = Clock::now();
+      SparseDirectUMFPACK solver;
+      solver.initialize(system_matrix);
+      result.factorize_time = seconds_since(start);
 
-    start = Clock::now();
-    solver.vmult(result.solution, system_rhs);
-    constraints.distribute(result.solution);
-    result.solve_time = seconds_since(start);
+      start = Clock::now();
+      solver.vmult(result.solution, system_rhs);
+      constraints.distribute(result.solution);
+      result.solve_time = seconds_since(start);
 
-    // What a plain time stepper pays at least per later step: one more
-    // back-substitution with the same factorization.
-    Vector<double> second(dof_handler.n_dofs());
-    start = Clock::now();
-    solver.vmult(second, system_rhs);
-    constraints.distribute(second);
-    result.resolve_time = seconds_since(start);
-
+      // What a plain time stepper pays at least per later step: one more
+      // back-substitution with the same factorization.
+      Vector<double> second(dof_handler.n_dofs());
+      start = Clock::now();
+      solver.vmult(second, system_rhs);
+      constraints.distribute(second);
+      result.resolve_time = seconds_since(start);
+    }
     result.peak_rss = status_bytes("VmHWM");
+
+    matched_umfpack_solve(system_matrix, system_rhs, constraints, result);
     return result;
   }
 } // namespace
@@ -422,6 +522,9 @@ main(int argc, char **argv)
           const PlainResult plain = plain_solve(triangulation);
           const double      plain_total =
             plain.assembly_time + plain.factorize_time + plain.solve_time;
+          const double matched_total = plain.assembly_time +
+                                       plain.matched_factorize_time +
+                                       plain.matched_solve_time;
           AssertThrow(plain.solution.size() == ndda_first.size(),
                       ExcMessage("ndda and the plain solve have different "
                                  "numbers of DoFs."));
@@ -434,6 +537,12 @@ main(int argc, char **argv)
                     << plain.factorize_time << " s, solve " << plain.solve_time
                     << " s, re-solve " << plain.resolve_time << " s"
                     << std::endl
+                    << "  plain, UMFPACK as ndda calls it: factorize "
+                    << plain.matched_factorize_time << " s, solve "
+                    << plain.matched_solve_time << " s, re-solve "
+                    << plain.matched_resolve_time
+                    << " s, difference to SparseDirectUMFPACK "
+                    << plain.matched_difference << std::endl
                     << "  |d_ndda - d_plain| / |d_plain| = "
                     << relative_difference
                     << "  (|d_plain| = " << plain.solution.l2_norm() << " m)"
@@ -447,6 +556,9 @@ main(int argc, char **argv)
           timing.add_value("per-step/plain", mean_step / plain_total);
           timing.add_value("per-step/plain re-solve",
                            mean_step / plain.resolve_time);
+          timing.add_value("first/matched", first_step / matched_total);
+          timing.add_value("per-step/matched re-solve",
+                           mean_step / plain.matched_resolve_time);
           timing.add_value("peak RSS (MB)", ndda_peak_rss / 1e6);
           timing.add_value("bytes/DoF", bytes_per_dof);
           timing.add_value("rel. l2 diff", relative_difference);
@@ -465,14 +577,21 @@ main(int argc, char **argv)
           detail.add_value("plain solve (s)", plain.solve_time);
           detail.add_value("plain re-solve (s)", plain.resolve_time);
           detail.add_value("plain peak RSS (MB)", plain.peak_rss / 1e6);
+          detail.add_value("matched factorize (s)",
+                           plain.matched_factorize_time);
+          detail.add_value("matched solve (s)", plain.matched_solve_time);
+          detail.add_value("matched re-solve (s)", plain.matched_resolve_time);
         }
 
       for (const auto &column : {"ndda first step (s)",
                                  "ndda per step (s)",
                                  "plain solve total (s)"})
         timing.set_precision(column, 4);
-      for (const auto &column :
-           {"first/plain", "per-step/plain", "per-step/plain re-solve"})
+      for (const auto &column : {"first/plain",
+                                 "per-step/plain",
+                                 "per-step/plain re-solve",
+                                 "first/matched",
+                                 "per-step/matched re-solve"})
         timing.set_precision(column, 3);
       timing.set_precision("peak RSS (MB)", 1);
       timing.set_precision("bytes/DoF", 0);
@@ -485,7 +604,10 @@ main(int argc, char **argv)
                                  "plain assembly (s)",
                                  "plain factorize (s)",
                                  "plain solve (s)",
-                                 "plain re-solve (s)"})
+                                 "plain re-solve (s)",
+                                 "matched factorize (s)",
+                                 "matched solve (s)",
+                                 "matched re-solve (s)"})
         detail.set_precision(column, 4);
       detail.set_precision("plain peak RSS (MB)", 1);
       std::cout << std::endl;

@@ -869,14 +869,20 @@ namespace ndda
   {
     TimerOutput::Scope scope(timer, "element matrices");
     const double       tolerance = parameters.control.matrix_update_tolerance;
-    const unsigned int n_computed =
-      element_cache.update(dof_handler,
-                           mapping,
-                           parameters.materials,
-                           only_moved_cells && tolerance > 0.,
-                           tolerance);
-    if (n_computed == 0 && only_moved_cells)
-      return;
+    // The first step uses the element matrices that setup() computed (it
+    // needed them for the initial internal force); later steps recompute
+    // those of the cells that moved.
+    if (only_moved_cells)
+      {
+        const unsigned int n_computed =
+          element_cache.update(dof_handler,
+                               mapping,
+                               parameters.materials,
+                               tolerance > 0.,
+                               tolerance);
+        if (n_computed == 0)
+          return;
+      }
     ++n_matrix_rebuilds;
     assemble_global_matrices();
     // Gravity load vectors: M times a unit acceleration.
