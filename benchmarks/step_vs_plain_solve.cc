@@ -74,6 +74,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/linear_solver.h>
 #include <ndda/simulator.h>
 
 #include <algorithm>
@@ -86,7 +87,6 @@
 #include <numeric>
 #include <sstream>
 #include <string>
-#include <suitesparse/umfpack.h>
 #include <vector>
 
 using namespace dealii;
@@ -214,20 +214,10 @@ namespace
   };
 
 
-  void
-  check_umfpack(const SuiteSparse_long status, const std::string &what)
-  {
-    AssertThrow(status == UMFPACK_OK,
-                ExcMessage("UMFPACK " + what + " failed with status " +
-                           std::to_string(status) + "."));
-  }
-
-
   /**
-   * Factorize and solve @p matrix x = @p rhs with UMFPACK called directly,
-   * set up as ndda's LinearSolver does it (symmetric strategy, no iterative
-   * refinement); the matrix is handed over by rows, i.e. as its transpose,
-   * and solved with UMFPACK_At, as SparseDirectUMFPACK does too.
+   * Factorize and solve @p matrix x = @p rhs with ndda's own LinearSolver
+   * (UMFPACK, symmetric strategy, no iterative refinement), so that the
+   * "matched" columns use exactly ndda's solver settings.
    */
   void
   matched_umfpack_solve(const SparseMatrix<double>      &matrix,
@@ -235,63 +225,20 @@ namespace
                         const AffineConstraints<double> &constraints,
                         PlainResult                     &result)
   {
-    auto                          start = Clock::now();
-    const SuiteSparse_long        n     = matrix.m();
-    std::vector<SuiteSparse_long> ap(n + 1, 0), ai;
-    std::vector<double>           ax;
-    ai.reserve(matrix.n_nonzero_elements());
-    ax.reserve(matrix.n_nonzero_elements());
-    std::vector<std::pair<SuiteSparse_long, double>> row;
-    for (SuiteSparse_long i = 0; i < n; ++i)
-      {
-        row.clear();
-        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-          row.emplace_back(entry->column(), entry->value());
-        std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
-          return a.first < b.first;
-        });
-        for (const auto &[j, value] : row)
-          {
-            ai.push_back(j);
-            ax.push_back(value);
-          }
-        ap[i + 1] = ai.size();
-      }
-    double control[UMFPACK_CONTROL], info[UMFPACK_INFO];
-    umfpack_dl_defaults(control);
-    control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
-    control[UMFPACK_IRSTEP]   = 0;
-    void *symbolic = nullptr, *numeric = nullptr;
-    check_umfpack(
-      umfpack_dl_symbolic(
-        n, n, ap.data(), ai.data(), ax.data(), &symbolic, control, info),
-      "symbolic factorization");
-    check_umfpack(
-      umfpack_dl_numeric(
-        ap.data(), ai.data(), ax.data(), symbolic, &numeric, control, info),
-      "numeric factorization");
-    umfpack_dl_free_symbolic(&symbolic);
+    auto               start = Clock::now();
+    ndda::LinearSolver solver(ndda::parameters::LinearSolver::umfpack, 0.);
+    solver.factorize(matrix);
     result.matched_factorize_time = seconds_since(start);
 
-    Vector<double> x(n);
+    Vector<double> x(matrix.m());
     for (double *time :
          {&result.matched_solve_time, &result.matched_resolve_time})
       {
         start = Clock::now();
-        check_umfpack(umfpack_dl_solve(UMFPACK_At,
-                                       ap.data(),
-                                       ai.data(),
-                                       ax.data(),
-                                       x.begin(),
-                                       rhs.begin(),
-                                       numeric,
-                                       control,
-                                       info),
-                      "solve");
+        solver.solve(x, rhs);
         constraints.distribute(x);
         *time = seconds_since(start);
       }
-    umfpack_dl_free_numeric(&numeric);
     x -= result.solution;
     result.matched_difference = x.l2_norm() / result.solution.l2_norm();
   }
