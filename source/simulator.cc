@@ -238,6 +238,7 @@ namespace ndda
 
     setup_dofs();
     setup_constraints();
+    setup_contacts();
     setup_loads();
     setup_measure_points();
 
@@ -337,7 +338,7 @@ namespace ndda
     const unsigned int n = dof_handler.n_dofs();
     displacement.reinit(n);
     velocity.reinit(n);
-    acceleration.reinit(n);
+    inertia_force.reinit(n);
     internal_force.reinit(n);
     for (unsigned int d = 0; d < dim; ++d)
       gravity_load[d].reinit(n);
@@ -559,6 +560,18 @@ namespace ndda
             dsp.add(i, j);
         bolts.push_back(bolt);
       }
+    if (parameters.contact.enabled)
+      base_sparsity.copy_from(dsp);
+    reinit_matrices(dsp);
+    pattern_couplings.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::reinit_matrices(DynamicSparsityPattern &dsp)
+  {
     constraints.condense(dsp);
     sparsity_pattern.copy_from(dsp);
     stiffness_matrix.reinit(sparsity_pattern);
@@ -566,6 +579,113 @@ namespace ndda
     damping_matrix.reinit(sparsity_pattern);
     system_matrix.reinit(sparsity_pattern);
     condensed_matrix.reinit(sparsity_pattern);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_contacts()
+  {
+    if (!parameters.contact.enabled)
+      return;
+    const auto &materials   = parameters.materials;
+    double      max_modulus = 0;
+    for (const auto &m : materials.materials)
+      max_modulus = std::max(max_modulus, m.youngs_modulus);
+
+    // The friction coefficient of each boundary edge's side: its
+    // material's joint friction angle, or the scene's joint angle.
+    const auto edges = contact::boundary_edges(mesh.get_block_mesh());
+    std::vector<unsigned int> cell_material(
+      mesh.get_triangulation().n_active_cells());
+    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+      cell_material[cell->active_cell_index()] = cell->material_id();
+    // The edges index the triangles of the block mesh, which are the
+    // active cells of the triangulation, vertex order kept.
+    {
+      std::vector<typename Triangulation<dim>::active_cell_iterator> cells;
+      for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+        cells.push_back(cell);
+      for (const auto &e : edges)
+        AssertThrow(cells[e.cell]->vertex_index(e.local_vertex) == e.v0 &&
+                      cells[e.cell]->vertex_index((e.local_vertex + 1) % 3) ==
+                        e.v1,
+                    ExcInternalError());
+    }
+    std::vector<double> edge_friction(edges.size());
+    for (unsigned int e = 0; e < edges.size(); ++e)
+      {
+        const auto  &m     = materials.materials[cell_material[edges[e].cell]];
+        const double angle = m.joint_friction_angle >= 0. ?
+                               m.joint_friction_angle :
+                               materials.joint.friction_angle;
+        edge_friction[e]   = std::tan(angle * numbers::PI / 180.);
+      }
+
+    contact::DofAccess access;
+    access.fe          = fe.get();
+    access.cell_dofs   = &cell_dof_indices;
+    access.component   = &local_component;
+    access.vertex_dofs = &vertex_dofs;
+
+    // Shi's detection distance: twice the largest displacement a step may
+    // have, so every contact a step can close is a candidate of that step.
+    contact_threshold =
+      2. * parameters.control.max_displacement_ratio * scene_half_height;
+    penetration_tolerance =
+      parameters.contact.max_penetration_ratio * scene_half_height;
+
+    contact::ContactSettings settings;
+    settings.normal_stiffness =
+      parameters.contact.penalty_factor * max_modulus * materials.thickness;
+    settings.shear_ratio           = parameters.contact.shear_stiffness_ratio;
+    settings.vertex_vertex_method  = parameters.contact.vertex_vertex_method;
+    settings.state_tolerance       = 1e-9 * penetration_tolerance;
+    settings.ignore_depth          = penetration_tolerance;
+    settings.average_start_and_end = parameters.control.time_integrator ==
+                                       parameters::TimeIntegrator::newmark &&
+                                     parameters.control.analysis_type !=
+                                       parameters::AnalysisType::quasi_static;
+    contacts.initialize(edges, edge_friction, access, settings);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_sparsity_for_contacts()
+  {
+    // The pattern holds the couplings of every candidate contact of the
+    // step; it (and every matrix on it) is rebuilt only when that set
+    // changes, so a scene at rest keeps its pattern and UMFPACK its
+    // symbolic factorization.
+    const auto &couplings = contacts.get_couplings();
+    if (couplings == pattern_couplings)
+      return;
+    TimerOutput::Scope                   scope(timer, "sparsity");
+    DynamicSparsityPattern               dsp(base_sparsity.n_rows());
+    std::vector<types::global_dof_index> row;
+    for (types::global_dof_index i = 0; i < base_sparsity.n_rows(); ++i)
+      {
+        row.clear();
+        for (auto entry = base_sparsity.begin(i); entry != base_sparsity.end(i);
+             ++entry)
+          row.push_back(entry->column());
+        dsp.add_entries(i, row.begin(), row.end());
+      }
+    const unsigned int n_cell_dofs = fe->n_dofs_per_cell();
+    for (const auto &[vertex, cell] : couplings)
+      for (const auto i : vertex_dofs[vertex])
+        for (unsigned int k = 0; k < n_cell_dofs; ++k)
+          {
+            const auto j = cell_dof_indices[cell * n_cell_dofs + k];
+            dsp.add(i, j);
+            dsp.add(j, i);
+          }
+    reinit_matrices(dsp);
+    pattern_couplings = couplings;
+    assemble_global_matrices();
   }
 
 
@@ -904,7 +1024,7 @@ namespace ndda
   void
   Simulator<dim>::assemble_system_matrix(const double dt)
   {
-    TimerOutput::Scope scope(timer, "factorize");
+    TimerOutput::Scope scope(timer, "system matrix");
     const auto        &control = parameters.control;
     double             c_mass  = 0.;
     if (control.analysis_type != parameters::AnalysisType::quasi_static)
@@ -928,11 +1048,23 @@ namespace ndda
               if (k != 0.)
                 system_matrix.add(nc.dofs[i], nc.dofs[j], k);
             }
-    condensed_matrix.copy_from(system_matrix);
+    assembled_dt     = dt;
+    matrices_changed = false;
+    base_factorized  = false;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::factorize(const bool with_contacts)
+  {
+    // condensed_matrix holds the system matrix, with the contact springs
+    // already added if with_contacts.
+    TimerOutput::Scope scope(timer, "factorize");
     constraints.condense(condensed_matrix);
     linear_solver->factorize(condensed_matrix);
-    factorized_dt    = dt;
-    matrices_changed = false;
+    base_factorized = !with_contacts;
   }
 
 
@@ -962,7 +1094,7 @@ namespace ndda
     // The consistent mass matrix is well conditioned (its condition number
     // does not grow with refinement): Jacobi-preconditioned CG needs a few
     // dozen iterations, far less than a factorization.
-    acceleration = 0;
+    Vector<double> acceleration(rhs.size());
     if (rhs.l2_norm() > 0)
       {
         SolverControl            control(1000, 1e-14 * rhs.l2_norm());
@@ -972,6 +1104,7 @@ namespace ndda
         cg.solve(m, acceleration, rhs, jacobi);
       }
     constraints.distribute(acceleration);
+    mass_matrix.vmult(inertia_force, acceleration);
   }
 
 
@@ -1044,7 +1177,7 @@ namespace ndda
 
 
   template <int dim>
-  bool
+  typename Simulator<dim>::StepResult
   Simulator<dim>::try_time_step(const double dt)
   {
     const auto &control = parameters.control;
@@ -1052,59 +1185,109 @@ namespace ndda
       control.analysis_type != parameters::AnalysisType::quasi_static;
     const bool newmark =
       control.time_integrator == parameters::TimeIntegrator::newmark;
+    const bool exact =
+      control.constraint_method == parameters::ConstraintMethod::exact;
+    const bool with_contact = parameters.contact.enabled;
 
-    if (matrices_changed || dt != factorized_dt)
+    if (matrices_changed || dt != assembled_dt)
       assemble_system_matrix(dt);
 
-    TimerOutput::Scope scope(timer, "solve");
     // Right-hand side at the end of the step (thesis 3.15):
     // f_ext(t1) - f_int + inertia terms of the integrator.
     Vector<double> rhs;
-    assemble_external_force(time + dt, rhs);
-    rhs -= internal_force;
-    if (inertia)
-      {
-        Vector<double> mv(velocity);
-        if (newmark)
-          {
-            mv *= 4. / dt;
-            mv += acceleration;
-          }
-        else
-          mv *= 2. / dt;
-        mass_matrix.vmult_add(rhs, mv);
-      }
+    {
+      TimerOutput::Scope scope(timer, "solve");
+      assemble_external_force(time + dt, step_external_force);
+      rhs = step_external_force;
+      rhs -= internal_force;
+      if (inertia)
+        {
+          Vector<double> mv(velocity);
+          mv *= (newmark ? 4. : 2.) / dt;
+          mass_matrix.vmult_add(rhs, mv);
+          if (newmark)
+            rhs += inertia_force;
+        }
+    }
 
     Vector<double> prescribed(dof_handler.n_dofs());
     prescribed_increment(time, dt, prescribed);
+    if (!exact)
+      for (const auto &nc : node_constraints)
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            rhs[nc.dofs[i]] += (nc.type == parameters::ConstraintType::roller ?
+                                  nc.normal[i] * nc.normal[j] :
+                                  (i == j ? 1. : 0.)) *
+                               penalty_stiffness * prescribed[nc.dofs[j]];
     Vector<double> d(dof_handler.n_dofs());
-    if (control.constraint_method == parameters::ConstraintMethod::exact)
+
+    // The open-close iteration (thesis 2.3.13; DESIGN decision 5): solve
+    // with the springs of the present contact states, classify the
+    // contacts from the solution, and solve again until no state changes.
+    // The element part of the matrix is kept; only contact springs change
+    // between iterations.
+    const unsigned int max_iterations =
+      with_contact ? parameters.contact.max_open_close_iterations : 1;
+    bool settled = false;
+    for (unsigned int iteration = 0; iteration < max_iterations; ++iteration)
       {
-        // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies
-        // the homogeneous constraints, so the factorization stays valid.
-        if (!node_constraints.empty())
+        const bool     springs = with_contact && contacts.has_springs();
+        Vector<double> b(rhs);
+        // Newmark averages the forces at the step's start and end. A
+        // contact that opens in this step would keep half of its start
+        // force for the whole step and hand the body the energy
+        // F0 g1 / 2 (g1 the gap it opens): only contacts closed at both
+        // ends enter the average (doc/contact.md).
+        inertia_correction.reinit(dof_handler.n_dofs());
+        if (with_contact && newmark && inertia)
           {
-            Vector<double> tmp(dof_handler.n_dofs());
-            system_matrix.vmult(tmp, prescribed);
-            rhs -= tmp;
+            contacts.newmark_correction(inertia_correction);
+            b += inertia_correction;
           }
-        constraints.condense(rhs);
-        last_solver_iterations = linear_solver->solve(d, rhs);
-        constraints.distribute(d);
-        d += prescribed;
+        if (springs)
+          {
+            TimerOutput::Scope scope(timer, "contact assembly");
+            condensed_matrix.copy_from(system_matrix);
+            contacts.assemble(condensed_matrix, b);
+          }
+        else if (!base_factorized)
+          condensed_matrix.copy_from(system_matrix);
+
+        TimerOutput::Scope scope(timer, "solve");
+        if (exact)
+          {
+            // d = d_h + d_g: d_g carries the prescribed values, d_h
+            // satisfies the homogeneous constraints.
+            if (!node_constraints.empty())
+              {
+                Vector<double> tmp(dof_handler.n_dofs());
+                if (springs || !base_factorized)
+                  condensed_matrix.vmult(tmp, prescribed);
+                else
+                  system_matrix.vmult(tmp, prescribed);
+                b -= tmp;
+              }
+            constraints.condense(b);
+          }
+        if (springs || !base_factorized)
+          factorize(springs);
+        last_solver_iterations = linear_solver->solve(d, b);
+        if (exact)
+          {
+            constraints.distribute(d);
+            d += prescribed;
+          }
+        if (with_contact)
+          contacts.count_iteration();
+        if (!with_contact || !contacts.update_states(d))
+          {
+            settled = true;
+            break;
+          }
       }
-    else
-      {
-        for (const auto &nc : node_constraints)
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              rhs[nc.dofs[i]] +=
-                (nc.type == parameters::ConstraintType::roller ?
-                   nc.normal[i] * nc.normal[j] :
-                   (i == j ? 1. : 0.)) *
-                penalty_stiffness * prescribed[nc.dofs[j]];
-        last_solver_iterations = linear_solver->solve(d, rhs);
-      }
+    if (!settled)
+      return StepResult::not_settled;
 
     // DDA step control: the largest nodal displacement must stay below the
     // allowed fraction of half the scene height.
@@ -1115,10 +1298,23 @@ namespace ndda
                  d[dofs[0]] * d[dofs[0]] + d[dofs[1]] * d[dofs[1]]);
     max_increment = std::sqrt(max_increment);
     if (max_increment > control.max_displacement_ratio * scene_half_height)
-      return false;
+      return StepResult::too_large;
 
+    if (with_contact &&
+        parameters.contact.penalty_method ==
+          parameters::PenaltyMethod::automatic &&
+        contacts.max_penetration(d) > penetration_tolerance)
+      {
+        contacts.set_normal_stiffness(2. *
+                                      contacts.get_settings().normal_stiffness);
+        ++n_penalty_raises;
+        return StepResult::penalty_raised;
+      }
+
+    if (with_contact)
+      contacts.end_step(d);
     update_state(d, dt);
-    return true;
+    return StepResult::accepted;
   }
 
 
@@ -1136,18 +1332,22 @@ namespace ndda
       {
         velocity = d;
         velocity /= dt;
-        acceleration = 0;
+        inertia_force = 0;
       }
     else
       {
         if (control.time_integrator == parameters::TimeIntegrator::newmark)
           {
-            // a1 = 4 / dt^2 (d - dt v0) - a0
-            Vector<double> a1(d);
-            a1.add(-dt, velocity);
-            a1 *= 4. / (dt * dt);
-            a1 -= acceleration;
-            acceleration = a1;
+            // M a1 = 4 / dt^2 M (d - dt v0) - M a0, where M a0 leaves out
+            // the start forces of contacts that opened in this step (see
+            // try_time_step()).
+            Vector<double> a(d), ma(d.size());
+            a.add(-dt, velocity);
+            a *= 4. / (dt * dt);
+            mass_matrix.vmult(ma, a);
+            ma -= inertia_force;
+            ma -= inertia_correction;
+            inertia_force = ma;
           }
         velocity *= -1.;
         velocity.add(2. / dt, d);
@@ -1186,8 +1386,8 @@ namespace ndda
     if (control.analysis_type == parameters::AnalysisType::static_analysis)
       {
         // DDA statics: every step starts at rest (thesis 3.7).
-        velocity     = 0;
-        acceleration = 0;
+        velocity      = 0;
+        inertia_force = 0;
       }
 
     for (auto &bolt : bolts)
@@ -1198,6 +1398,10 @@ namespace ndda
           elongation += l[c] * (d[bolt.dofs[c]] - d[bolt.dofs[dim + c]]);
         bolt.axial_force += bolt.stiffness * elongation;
       }
+
+    // Work of the loads over the step, by the trapezoidal rule.
+    load_work += 0.5 * (external_force * d + step_external_force * d);
+    external_force = step_external_force;
 
     displacement += d;
     move_mesh(d);
@@ -1260,7 +1464,7 @@ namespace ndda
         const auto [cs, sn] = cos_sin(omega);
         const auto [i, j]   = node_dofs[n];
         rotate_pair(velocity, i, j, cs, sn);
-        rotate_pair(acceleration, i, j, cs, sn);
+        rotate_pair(inertia_force, i, j, cs, sn);
         rotate_pair(internal_force, i, j, cs, sn);
       }
   }
@@ -1347,29 +1551,70 @@ namespace ndda
         if (measure_histories.size() > 0 && measure_histories[0].empty())
           record_measure_points();
         time_step = parameters.control.time_step;
+        assemble_external_force(time, external_force);
+        initial_kinetic_energy = kinetic_energy();
       }
     else
       build_element_matrices(true);
+
+    // Contacts are detected once per step, on the geometry of its start;
+    // the detection distance covers every step size the cuts may try.
+    if (parameters.contact.enabled)
+      {
+        {
+          TimerOutput::Scope scope(timer, "contact detection");
+          contacts.begin_step(mesh.get_block_mesh().vertices,
+                              contact_threshold);
+        }
+        update_sparsity_for_contacts();
+      }
 
     // The last step ends exactly at the end time; a remainder within
     // round-off of the step size keeps the step size (and factorization).
     const double remaining = parameters.control.end_time - time;
     double dt = remaining < time_step * (1. - 1e-9) ? remaining : time_step;
-    unsigned int cuts = 0;
-    while (!try_time_step(dt))
+    unsigned int cuts            = 0;
+    unsigned int raises          = 0;
+    StepResult   result          = StepResult::accepted;
+    unsigned int open_close_cuts = 0;
+    while ((result = try_time_step(dt)) != StepResult::accepted)
       {
+        if (parameters.contact.enabled)
+          contacts.restart_step();
+        if (result == StepResult::penalty_raised)
+          {
+            ++raises;
+            AssertThrow(raises <= 30,
+                        ExcMessage("Step " + std::to_string(step_number + 1) +
+                                   " at t = " + Utilities::to_string(time) +
+                                   ": the automatic penalty was doubled 30 "
+                                   "times and the penetration still exceeds "
+                                   "Contact/Maximum penetration ratio. "
+                                   "Increase the ratio or reduce the time "
+                                   "step."));
+            continue;
+          }
         ++cuts;
+        if (result == StepResult::not_settled)
+          ++open_close_cuts;
         AssertThrow(
           cuts <= parameters.control.max_step_cuts,
           ExcMessage(
             "Step " + std::to_string(step_number + 1) +
-            " at t = " + Utilities::to_string(time) +
-            ": the largest displacement increment " +
-            Utilities::to_string(max_increment) +
-            " m still exceeds Control/Maximum displacement ratio " +
-            Utilities::to_string(parameters.control.max_displacement_ratio) +
-            " of half the scene height after " + std::to_string(cuts - 1) +
-            " cuts. Increase the ratio or 'Maximum step cuts', "
+            " at t = " + Utilities::to_string(time) + ": " +
+            (result == StepResult::not_settled ?
+               "the open-close iteration still changes contact states "
+               "after Contact/Open-close iterations = " +
+                 std::to_string(parameters.contact.max_open_close_iterations) +
+                 " solves" :
+               "the largest displacement increment " +
+                 Utilities::to_string(max_increment) +
+                 " m still exceeds Control/Maximum displacement ratio " +
+                 Utilities::to_string(
+                   parameters.control.max_displacement_ratio) +
+                 " of half the scene height") +
+            ", after " + std::to_string(cuts - 1) +
+            " step cuts. Increase 'Maximum step cuts' or the limit named, "
             "or reduce the time step."));
         dt *= 0.5;
       }
@@ -1390,7 +1635,55 @@ namespace ndda
     statistics.add_value("Kinetic energy (J)", kinetic_energy());
     statistics.add_value("Strain energy (J)", strain_energy());
     statistics.add_value("Max increment (m)", max_increment);
+    if (parameters.contact.enabled)
+      {
+        const auto &c = contacts.get_statistics();
+        statistics.add_value("Open-close iterations", c.n_iterations);
+        statistics.add_value("Open-close cuts", open_close_cuts);
+        statistics.add_value("Contact candidates", c.n_contacts);
+        statistics.add_value("Closed contacts", c.n_closed);
+        statistics.add_value("Sliding contacts", c.n_sliding);
+        statistics.add_value("Vertex springs", c.n_vertex_springs);
+        statistics.add_value("Max penetration (m)", c.max_penetration);
+        statistics.add_value("Contact energy (J)", c.spring_energy);
+        statistics.add_value("Contact dissipation (J)", c.dissipation);
+        statistics.add_value("Normal stiffness (N/m)",
+                             contacts.get_settings().normal_stiffness);
+      }
+    statistics.add_value("Work of loads (J)", load_work);
+    statistics.add_value("Energy gain (J)", energy_error());
     statistics.add_value("Wall time per step (s)", last_step_time);
+    if (step_number == 1)
+      {
+        std::vector<std::string> columns = {"Max increment (m)",
+                                            "Kinetic energy (J)",
+                                            "Strain energy (J)",
+                                            "Work of loads (J)",
+                                            "Energy gain (J)"};
+        if (parameters.contact.enabled)
+          for (const auto *c : {"Max penetration (m)",
+                                "Contact energy (J)",
+                                "Contact dissipation (J)",
+                                "Normal stiffness (N/m)"})
+            columns.push_back(c);
+        for (const auto &c : columns)
+          {
+            statistics.set_scientific(c, true);
+            statistics.set_precision(c, 6);
+          }
+      }
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::energy_error() const
+  {
+    const double spring_energy =
+      parameters.contact.enabled ? contacts.get_statistics().spring_energy : 0.;
+    return kinetic_energy() + strain_energy() + spring_energy - load_work -
+           initial_kinetic_energy;
   }
 
 

@@ -17,10 +17,12 @@
 #include <deal.II/fe/mapping_fe.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <ndda/contact/contact_handler.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/element_cache.h>
@@ -204,6 +206,30 @@ namespace ndda
       return linear_solver->n_factorizations();
     }
 
+    /** Contacts of the scene: states, statistics of the last step. */
+    const contact::ContactHandler &
+    get_contacts() const
+    {
+      return contacts;
+    }
+
+    /** Work done by the external loads since the start (J). */
+    double
+    work_of_loads() const
+    {
+      return load_work;
+    }
+
+    /**
+     * Mechanical energy gained since the start (J): kinetic + strain +
+     * contact spring energy - work of the loads - initial kinetic energy.
+     * Zero for an exact, energy-conserving run without friction; negative
+     * where friction, impacts or the integrator take energy out; positive
+     * only if something creates energy (a test for spurious gain).
+     */
+    double
+    energy_error() const;
+
     /** Wall time spent in the last call to do_time_step() (s). */
     double
     last_step_wall_time() const
@@ -284,10 +310,32 @@ namespace ndda
     void
     assemble_system_matrix(const double dt);
     void
+    factorize(const bool with_contacts);
+    void
+    setup_contacts();
+    void
+    update_sparsity_for_contacts();
+    /** Condense @p dsp, make it the sparsity pattern, and reinit every
+     * matrix on it (their entries are zero then). */
+    void
+    reinit_matrices(DynamicSparsityPattern &dsp);
+
+    /** How one attempt at a time step ended. */
+    enum class StepResult
+    {
+      accepted,
+      /// The largest displacement exceeded the allowed ratio.
+      too_large,
+      /// The open-close iteration did not settle.
+      not_settled,
+      /// Automatic penalty: raised; solve the step again.
+      penalty_raised
+    };
+    void
     compute_internal_force();
     void
     compute_initial_acceleration();
-    bool
+    StepResult
     try_time_step(const double dt);
     void
     prescribed_increment(const double    t0,
@@ -348,22 +396,44 @@ namespace ndda
     std::vector<std::unique_ptr<FunctionParser<dim>>> constraint_functions;
     double                                            penalty_stiffness = 0;
 
-    SparsityPattern               sparsity_pattern;
-    SparseMatrix<double>          stiffness_matrix;
-    SparseMatrix<double>          mass_matrix;
-    SparseMatrix<double>          damping_matrix;
-    bool                          has_damping = false;
-    SparseMatrix<double>          system_matrix;
-    SparseMatrix<double>          condensed_matrix;
-    std::unique_ptr<LinearSolver> linear_solver;
-    double                        factorized_dt    = -1;
-    bool                          matrices_changed = true;
+    /// Couplings of elements and bolts, before contacts and condensation.
+    SparsityPattern base_sparsity;
+    /// The (vertex, cell) contact couplings the sparsity pattern holds.
+    std::vector<std::pair<unsigned int, unsigned int>> pattern_couplings;
+    SparsityPattern                                    sparsity_pattern;
+    SparseMatrix<double>                               stiffness_matrix;
+    SparseMatrix<double>                               mass_matrix;
+    SparseMatrix<double>                               damping_matrix;
+    bool                                               has_damping = false;
+    SparseMatrix<double>                               system_matrix;
+    SparseMatrix<double>                               condensed_matrix;
+    std::unique_ptr<LinearSolver>                      linear_solver;
+    double                                             assembled_dt     = -1;
+    bool                                               matrices_changed = true;
+    /// The factorization is that of the system matrix without contacts.
+    bool base_factorized = false;
+
+    contact::ContactHandler contacts;
+    double                  contact_threshold     = 0;
+    double                  penetration_tolerance = 0;
+    unsigned int            n_penalty_raises      = 0;
 
     Vector<double> displacement;
     Vector<double> velocity;
-    Vector<double> acceleration;
+    /// Newmark: M times the acceleration at the present time (the
+    /// inertia force), so that contact forces can be taken out of it
+    /// without a mass solve.
+    Vector<double> inertia_force;
+    /// Newmark with contacts: the correction of the inertia force for the
+    /// step being solved (ContactHandler::newmark_correction()).
+    Vector<double> inertia_correction;
     Vector<double> internal_force;
     Vector<double> gravity_load[dim];
+    /// External force at the present time, and at the end of the step
+    /// being solved (for the work of the loads).
+    Vector<double> external_force, step_external_force;
+    double         load_work              = 0;
+    double         initial_kinetic_energy = 0;
 
     std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
 

@@ -80,7 +80,9 @@ namespace ndda
               edges.push_back(
                 {mesh.triangles[t][k],
                  mesh.triangles[t][(k + 1) % 3],
-                 mesh.cell_block.empty() ? 0u : mesh.cell_block[t]});
+                 mesh.cell_block.empty() ? 0u : mesh.cell_block[t],
+                 t,
+                 k});
             }
           i = j;
         }

@@ -394,6 +394,90 @@ namespace ndda
 
 
     void
+    Contact::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      prm.declare_entry("Enable",
+                        "true",
+                        Patterns::Bool(),
+                        "Contact between blocks (and between the faces of "
+                        "cracks and notches). false: blocks pass through "
+                        "each other.");
+      prm.declare_entry("Penalty",
+                        "fixed",
+                        Patterns::Selection("fixed|automatic"),
+                        "fixed: normal spring stiffness = Penalty factor "
+                        "times the largest Young's modulus times the "
+                        "thickness (N/m); automatic: starts there and "
+                        "doubles whenever a step ends with a penetration "
+                        "beyond the tolerance, re-solving that step.");
+      prm.declare_entry("Penalty factor",
+                        "100",
+                        Patterns::Double(0.),
+                        "Normal contact spring stiffness as a multiple of "
+                        "the largest Young's modulus times the thickness "
+                        "(DDA's g0 / E); greater than zero.");
+      prm.declare_entry("Shear stiffness ratio",
+                        "0.4",
+                        Patterns::Double(0.),
+                        "Stiffness of the shear spring of a locked contact "
+                        "as a fraction of the normal one.");
+      prm.declare_entry("Open-close iterations",
+                        "10",
+                        Patterns::Integer(1, 100),
+                        "Largest number of solves in one step's open-close "
+                        "iteration; a step whose contact states still "
+                        "change is cut in half and retried.");
+      prm.declare_entry("Vertex-vertex method",
+                        "revised",
+                        Patterns::Selection("revised|shortest path"),
+                        "revised: entrance edge from the vertex trajectory, "
+                        "temporary vertex-vertex spring for genuine "
+                        "indeterminacy (thesis 6.2, 6.3); shortest path: "
+                        "the original DDA rule, the potential reference "
+                        "edge with the smaller penetration.");
+      prm.declare_entry("Maximum penetration ratio",
+                        "1e-3",
+                        Patterns::Double(0.),
+                        "Penetration tolerance as a fraction of half the "
+                        "scene's height: reported in the statistics, and "
+                        "with 'Penalty = automatic' the limit above which "
+                        "the penalty is raised.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Contact::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      enabled        = prm.get_bool("Enable");
+      penalty_method = prm.get("Penalty") == "fixed" ? PenaltyMethod::fixed :
+                                                       PenaltyMethod::automatic;
+      penalty_factor = prm.get_double("Penalty factor");
+      AssertThrow(penalty_factor > 0.,
+                  ExcMessage(
+                    "Contact/Penalty factor: " + prm.get("Penalty factor") +
+                    " is not positive. Give a multiple of the "
+                    "largest Young's modulus, e.g. 100."));
+      shear_stiffness_ratio     = prm.get_double("Shear stiffness ratio");
+      max_open_close_iterations = prm.get_integer("Open-close iterations");
+      vertex_vertex_method      = prm.get("Vertex-vertex method") == "revised" ?
+                                    VertexVertexMethod::revised :
+                                    VertexVertexMethod::shortest_path;
+      max_penetration_ratio     = prm.get_double("Maximum penetration ratio");
+      AssertThrow(max_penetration_ratio > 0. ||
+                    penalty_method == PenaltyMethod::fixed,
+                  ExcMessage("Contact/Maximum penetration ratio: must be "
+                             "greater than zero with 'Penalty = "
+                             "automatic'."));
+      prm.leave_subsection();
+    }
+
+
+
+    void
     Material::declare_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("Density",
@@ -412,6 +496,13 @@ namespace ndda
                         "30",
                         Patterns::Double(0., 90.),
                         angle_description("Internal friction angle"));
+      prm.declare_entry("Joint friction angle",
+                        "-1",
+                        Patterns::Double(-1., 90.),
+                        "Friction angle of contacts on this material's "
+                        "faces (degrees, in [0, 90)); -1: "
+                        "Materials/Joint/Friction angle. A contact uses the "
+                        "smaller angle of its two sides.");
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::Double(0.),
@@ -444,7 +535,12 @@ namespace ndda
                              "/Poisson's ratio: " + prm.get("Poisson's ratio") +
                              " gives an incompressible or unstable material; "
                              "give a value in (-1, 0.5)."));
-      friction_angle   = prm.get_double("Friction angle");
+      friction_angle       = prm.get_double("Friction angle");
+      joint_friction_angle = prm.get_double("Joint friction angle");
+      AssertThrow(joint_friction_angle < 90.,
+                  ExcMessage("Materials/" + n +
+                             "/Joint friction angle: must be below 90 "
+                             "degrees."));
       cohesion         = prm.get_double("Cohesion");
       tensile_strength = prm.get_double("Tensile strength");
       viscosity        = prm.get_double("Viscosity");
@@ -1049,6 +1145,7 @@ namespace ndda
                         "Name of the scene, used for the output directory; "
                         "empty: the .prm file's name without extension.");
       Control::declare_parameters(prm);
+      Contact::declare_parameters(prm);
       Materials::declare_parameters(prm, names.materials);
       Geometry::declare_parameters(prm, names.blocks, names.regions);
       Loads::declare_parameters(prm, names.point_loads, names.line_loads);
@@ -1149,6 +1246,7 @@ namespace ndda
         slash == std::string::npos ? "" : filename.substr(0, slash + 1);
 
       control.parse_parameters(prm);
+      contact.parse_parameters(prm);
       materials.parse_parameters(prm, names.materials);
       geometry.parse_parameters(
         prm, names.blocks, names.regions, materials, base_directory);

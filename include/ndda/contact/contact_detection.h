@@ -54,6 +54,11 @@ namespace ndda
       unsigned int v1;
       /// Block of the triangle the edge belongs to.
       unsigned int block;
+      /// The triangle (its index in the mesh, which is the active cell
+      /// index of the Triangulation built from it).
+      unsigned int cell = static_cast<unsigned int>(-1);
+      /// Local index of v0 in that triangle; v1 is (local_vertex + 1) % 3.
+      unsigned int local_vertex = 0;
     };
 
     /**

@@ -88,6 +88,45 @@ namespace ndda
       parse_parameters(ParameterHandler &prm);
     };
 
+    /** How the contact penalty is chosen. */
+    enum class PenaltyMethod
+    {
+      /// A fixed multiple of the largest Young's modulus.
+      fixed,
+      /// Starts as the fixed value and doubles whenever a step ends with a
+      /// penetration beyond the tolerance (the step is then solved again).
+      automatic
+    };
+
+    /** Resolution of vertex-vertex contacts, thesis chapter 6. */
+    enum class VertexVertexMethod
+    {
+      /// The thesis's revised method: entrance edge from the vertex's
+      /// trajectory (6.3), temporary vertex-vertex spring for genuine
+      /// indeterminacy (6.2).
+      revised,
+      /// The original rule: the potential reference edge with the smallest
+      /// penetration at the end of the step.
+      shortest_path
+    };
+
+    /** subsection Contact */
+    struct Contact
+    {
+      bool               enabled;
+      PenaltyMethod      penalty_method;
+      double             penalty_factor;
+      double             shear_stiffness_ratio;
+      unsigned int       max_open_close_iterations;
+      VertexVertexMethod vertex_vertex_method;
+      double             max_penetration_ratio;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
     /** One material of subsection Materials. */
     struct Material
     {
@@ -95,10 +134,14 @@ namespace ndda
       double      density;
       double      youngs_modulus;
       double      poissons_ratio;
-      double      friction_angle;
-      double      cohesion;
-      double      tensile_strength;
-      double      viscosity;
+      /// Friction angle of contacts on this material's faces (degrees);
+      /// negative: Materials/Joint's. A contact uses the smaller of its
+      /// two sides.
+      double joint_friction_angle;
+      double friction_angle;
+      double cohesion;
+      double tensile_strength;
+      double viscosity;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -288,6 +331,7 @@ namespace ndda
     {
       std::string        scene_name;
       Control            control;
+      Contact            contact;
       Materials          materials;
       Geometry           geometry;
       Loads              loads;

@@ -1,0 +1,389 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_contact_contact_handler_h
+#define ndda_contact_contact_handler_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/fe/fe.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ndda/contact/contact_detection.h>
+#include <ndda/parameters/parameters.h>
+
+#include <array>
+#include <map>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace ndda
+{
+  namespace contact
+  {
+    using dealii::Tensor;
+    using dealii::types::global_dof_index;
+
+    /**
+     * State of one contact in the open-close iteration (thesis 2.3.13,
+     * 3.10).
+     */
+    enum class State : unsigned char
+    {
+      /// No spring.
+      open,
+      /// Normal spring and shear spring: the vertex sticks to its anchor
+      /// point on the edge.
+      locked,
+      /// Normal spring and Coulomb friction along the edge.
+      sliding,
+      /// A vertex-vertex pair whose reference edge is not chosen yet, held
+      /// by a temporary spring between the two vertices (thesis 6.2).
+      vertex_spring
+    };
+
+    /** Material data and stiffnesses the contacts need. */
+    struct ContactSettings
+    {
+      /// Normal spring stiffness (N/m).
+      double normal_stiffness = 0;
+      /// Shear spring stiffness over normal spring stiffness.
+      double shear_ratio = 0.4;
+      /// Vertex-vertex resolution.
+      parameters::VertexVertexMethod vertex_vertex_method =
+        parameters::VertexVertexMethod::revised;
+      /// Hysteresis of the open-close criteria (m): a closed contact opens
+      /// when its gap exceeds this, an open one closes when it penetrates
+      /// deeper than this, and a sliding one locks when it moves back by
+      /// more than this.
+      double state_tolerance = 0;
+      /// A vertex-edge candidate that starts deeper than this inside the
+      /// other body, with no contact remembered from the last step, is not
+      /// a contact (the far face of a block thinner than the detection
+      /// distance, m).
+      double ignore_depth = 0;
+      /// The integrator averages start and end forces (Newmark); only used
+      /// for the friction work in the statistics.
+      bool average_start_and_end = false;
+    };
+
+    /**
+     * What the contacts need to know of the finite element space: the dofs
+     * of every cell (cell after cell), the vector component of each local
+     * dof, and the (x, y) dofs of every vertex.
+     */
+    struct DofAccess
+    {
+      const dealii::FiniteElement<2>                     *fe          = nullptr;
+      const std::vector<global_dof_index>                *cell_dofs   = nullptr;
+      const std::vector<unsigned int>                    *component   = nullptr;
+      const std::vector<std::array<global_dof_index, 2>> *vertex_dofs = nullptr;
+    };
+
+    /** Figures of the last step, for the statistics file. */
+    struct ContactStatistics
+    {
+      unsigned int n_candidates     = 0;
+      unsigned int n_contacts       = 0;
+      unsigned int n_closed         = 0;
+      unsigned int n_sliding        = 0;
+      unsigned int n_vertex_springs = 0;
+      unsigned int n_vertex_vertex  = 0;
+      unsigned int n_iterations     = 0;
+      /// Largest penetration (m, positive) of a closed contact at the end
+      /// of the step.
+      double max_penetration = 0;
+      /// Energy stored in the springs at the end of the step (J).
+      double spring_energy = 0;
+      /// Work done on the bodies by the contact forces the integrator
+      /// applied, accumulated over the run (J).
+      double contact_work = 0;
+      /// Energy the contacts have taken out of the scene so far (J):
+      /// -contact_work - spring_energy, i.e. friction and the losses of
+      /// penalty springs that close within a step.
+      double dissipation = 0;
+    };
+
+    /**
+     * The contacts of a scene: from the candidates of contact detection to
+     * springs in the system matrix, and the open-close iteration's states,
+     * carried from step to step.
+     *
+     * Every step:
+     * 1. begin_step(): detect candidates on the geometry at the step's
+     *    start, turn them into contacts (vertex-edge; vertex-vertex pairs
+     *    with their potential reference edges, chapter 6; edge-edge as
+     *    vertex-edge at the end point of the edge), and carry state,
+     *    reference edge and anchor ratio over from the last step.
+     * 2. open-close iteration: assemble() adds the springs of the present
+     *    states; after each solve, update_states() classifies every
+     *    contact from the solution and reports whether a state changed.
+     *    restart_step() goes back to the states of the step's start (for
+     *    a cut step).
+     * 3. end_step(): keep states, anchors and energies for the next step.
+     *
+     * The springs act between the contact vertex and the material point of
+     * the edge that the vertex projects on, evaluated with the element's
+     * own shape functions at that point, so any FE_SimplexP degree works.
+     * The normal gap is linearised as g = g0 + e_n . d, the shear
+     * displacement as s = s0 + e_t . d, with e_n (e_t) the normal (tangent)
+     * at the vertex minus the shape-function-weighted normal (tangent) at
+     * the edge's nodes; doc/contact.md derives the kernels and compares
+     * them with thesis 3.76-3.104.
+     *
+     * @ingroup contact
+     */
+    class ContactHandler
+    {
+    public:
+      /**
+       * Set up for a mesh: its boundary edges, the friction coefficient of
+       * each edge's side (tan of the joint friction angle of the edge's
+       * material) and the dofs.
+       */
+      void
+      initialize(const std::vector<BoundaryEdge> &edges,
+                 const std::vector<double>       &edge_friction,
+                 const DofAccess                 &dofs,
+                 const ContactSettings           &settings);
+
+      /** Change the normal stiffness (automatic penalty). */
+      void
+      set_normal_stiffness(const double k);
+
+      const ContactSettings &
+      get_settings() const
+      {
+        return settings;
+      }
+
+      /**
+       * Detect and set up the contacts of a step on the @p vertices at the
+       * step's start, with detection distance @p threshold.
+       */
+      void
+      begin_step(const std::vector<Point<2>> &vertices, const double threshold);
+
+      /** Back to the states of the step's start (the step is retried). */
+      void
+      restart_step();
+
+      /**
+       * The (vertex, cell) pairs a spring of this step may couple: the
+       * sparsity pattern must hold the couplings of the vertex's dofs with
+       * the cell's dofs. Sorted and unique.
+       */
+      const std::vector<std::pair<unsigned int, unsigned int>> &
+      get_couplings() const
+      {
+        return couplings;
+      }
+
+      /** True if some contact has a spring in its present state. */
+      bool
+      has_springs() const;
+
+      /**
+       * Add the springs of the present states to @p matrix and their
+       * forces at d = 0 to @p rhs.
+       */
+      void
+      assemble(dealii::SparseMatrix<double> &matrix,
+               dealii::Vector<double>       &rhs) const;
+
+      /**
+       * For the Newmark integrator, which averages the forces at the
+       * step's start and end through the inertia force M a0 of the last
+       * step: the correction to M a0 that replaces the contact forces it
+       * holds (those at the last step's end) by the start forces of the
+       * contacts that are closed at both ends of this step. Contacts that
+       * open then release their spring energy without the work of half
+       * their start force over the opening gap, which would otherwise add
+       * energy at every opening (doc/contact.md).
+       */
+      void
+      newmark_correction(dealii::Vector<double> &force) const;
+
+      /**
+       * The forces at the step's start (on its start geometry) of the
+       * contacts that are closed at both ends of the step.
+       */
+      void
+      start_forces(dealii::Vector<double> &force) const;
+
+      /**
+       * Classify every contact from the solution @p d of the last solve
+       * (thesis's open-close criteria, Coulomb limit, vertex-vertex
+       * resolution). Returns true if any state changed, i.e. another solve
+       * is needed.
+       */
+      bool
+      update_states(const dealii::Vector<double> &d);
+
+      /**
+       * Largest penetration (m) at the end of the step with increment @p d,
+       * over the closed contacts.
+       */
+      double
+      max_penetration(const dealii::Vector<double> &d) const;
+
+      /** Accept the step's solution @p d: energies, anchors, transfer. */
+      void
+      end_step(const dealii::Vector<double> &d);
+
+      /** Count one open-close iteration (for the statistics). */
+      void
+      count_iteration()
+      {
+        ++statistics.n_iterations;
+      }
+
+      const ContactStatistics &
+      get_statistics() const
+      {
+        return statistics;
+      }
+
+      /** One contact's state, for tests: (vertex, reference edge's v0, v1,
+       * state); the edge is (invalid, invalid) for an unresolved
+       * vertex-vertex pair, whose other vertex is then given as v0. */
+      std::vector<std::tuple<unsigned int, unsigned int, unsigned int, State>>
+      get_states() const;
+
+    private:
+      /**
+       * A vertex against the line of an edge, with its linearised gap
+       * operators, on the geometry of the step's start.
+       */
+      struct Option
+      {
+        unsigned int vertex;
+        unsigned int edge;
+        /// Outward unit normal and unit tangent (v0 -> v1) of the edge.
+        Tensor<1, 2> normal, tangent;
+        double       length;
+        /// Projection ratio of the vertex on the edge, not clamped.
+        double ratio;
+        /// Signed distance of the vertex to the edge's line (positive
+        /// outside).
+        double gap;
+        /// Dofs of the vertex, then of the edge's cell.
+        std::vector<global_dof_index> dofs;
+        /// Gap operators e_n and e_t on those dofs.
+        std::vector<double> wn, wt;
+
+        double
+        normal_gap(const dealii::Vector<double> &d) const;
+        double
+        tangential_increment(const dealii::Vector<double> &d) const;
+      };
+
+      /** A contact: a vertex-edge pair or a vertex-vertex pair. */
+      struct Contact
+      {
+        /// Potential (vertex, edge) pairs: one for a vertex-edge contact,
+        /// the edges at either vertex for a vertex-vertex pair.
+        std::vector<Option> options;
+        /// The chosen option, or invalid while a vertex-vertex pair is
+        /// unresolved.
+        unsigned int chosen = invalid;
+        /// The two vertices of a vertex-vertex pair.
+        unsigned int vertex_a = invalid, vertex_b = invalid;
+        State        state = State::open;
+        /// Shear spring anchor, as a ratio along the chosen edge's line
+        /// (outside [0, 1] for a vertex beyond the edge's end).
+        double anchor = 0;
+        /// Sliding direction along the edge's tangent (+1, -1; 0 without
+        /// friction).
+        int    sign     = 0;
+        double friction = 0;
+
+        State        start_state  = State::open;
+        unsigned int start_chosen = invalid;
+        double       start_anchor = 0;
+        int          start_sign   = 0;
+        /// Changes between open and closed in this step's iteration.
+        unsigned int flips = 0;
+      };
+
+      /** What is carried from one step to the next, per contact key. */
+      struct Memory
+      {
+        State  state;
+        double anchor;
+        int    sign;
+      };
+
+      static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
+
+      Option
+      make_option(const std::vector<Point<2>> &vertices,
+                  const unsigned int           vertex,
+                  const unsigned int           edge) const;
+
+      /** Key of a (vertex, edge) pair that survives renumbered edges. */
+      std::tuple<unsigned int, unsigned int, unsigned int>
+      key(const unsigned int vertex, const unsigned int edge) const
+      {
+        return {vertex, edges[edge].v0, edges[edge].v1};
+      }
+
+      /**
+       * Add the springs of a contact in @p state on option @p o: their
+       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
+       * stiffness to @p matrix.
+       */
+      void
+      add_springs(const Option                 &o,
+                  const State                   state,
+                  const double                  anchor,
+                  const int                     sign,
+                  const double                  friction,
+                  dealii::SparseMatrix<double> *matrix,
+                  dealii::Vector<double>       &rhs) const;
+
+      /** Carry the memory of the last step over to contact @p c. */
+      void
+      transfer(Contact &c, const std::vector<Point<2>> &vertices) const;
+
+      /** Closed-state classification of a resolved contact. */
+      State
+      classify(const Contact                &c,
+               const dealii::Vector<double> &d,
+               int                          &sign) const;
+
+      /** Choose the entrance edge of a penetrating vertex-vertex pair among
+       * the options @p inside of the vertices that entered; invalid for
+       * genuine indeterminacy (revised method). */
+      unsigned int
+      entrance_option(const Contact                   &c,
+                      const std::vector<unsigned int> &inside,
+                      const dealii::Vector<double>    &d) const;
+
+      /** The option a temporary vertex spring resolves to (6.2), or
+       * invalid if the motion is symmetric. */
+      unsigned int
+      sliding_option(const Contact &c, const dealii::Vector<double> &d) const;
+
+      ContactSettings                                    settings;
+      DofAccess                                          dofs;
+      std::vector<BoundaryEdge>                          edges;
+      std::vector<double>                                edge_friction;
+      std::vector<double>                                vertex_friction;
+      std::vector<std::vector<unsigned int>>             edges_at_vertex;
+      std::vector<Point<2>>                              start_vertices;
+      std::vector<Contact>                               contacts;
+      std::vector<std::pair<unsigned int, unsigned int>> couplings;
+      std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
+                        memory;
+      ContactStatistics statistics;
+      /// Forces of all springs at the end of the last accepted step.
+      dealii::Vector<double> end_force;
+    };
+  } // namespace contact
+} // namespace ndda
+
+#endif

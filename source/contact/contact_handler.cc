@@ -1,0 +1,931 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <deal.II/base/exceptions.h>
+
+#include <ndda/contact/contact_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace ndda
+{
+  namespace contact
+  {
+    namespace
+    {
+      /** Vertices of the reference triangle (deal.II's numbering). */
+      const Point<2> unit_vertex[3] = {Point<2>(0, 0),
+                                       Point<2>(1, 0),
+                                       Point<2>(0, 1)};
+
+      /** Cosine of the largest angle between two edges taken as parallel. */
+      constexpr double parallel_cosine = 0.99985; // 1 degree
+
+      double
+      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+    } // namespace
+
+
+
+    double
+    ContactHandler::Option::normal_gap(const dealii::Vector<double> &d) const
+    {
+      double g = gap;
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        g += wn[k] * d[dofs[k]];
+      return g;
+    }
+
+
+
+    double
+    ContactHandler::Option::tangential_increment(
+      const dealii::Vector<double> &d) const
+    {
+      double s = 0;
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        s += wt[k] * d[dofs[k]];
+      return s;
+    }
+
+
+
+    void
+    ContactHandler::initialize(const std::vector<BoundaryEdge> &edges_in,
+                               const std::vector<double>       &friction_in,
+                               const DofAccess                 &dofs_in,
+                               const ContactSettings           &settings_in)
+    {
+      AssertDimension(edges_in.size(), friction_in.size());
+      edges         = edges_in;
+      edge_friction = friction_in;
+      dofs          = dofs_in;
+      settings      = settings_in;
+
+      const unsigned int n_vertices = dofs.vertex_dofs->size();
+      edges_at_vertex.assign(n_vertices, {});
+      vertex_friction.assign(n_vertices, std::numeric_limits<double>::max());
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        for (const unsigned int v : {edges[e].v0, edges[e].v1})
+          {
+            edges_at_vertex[v].push_back(e);
+            vertex_friction[v] = std::min(vertex_friction[v], edge_friction[e]);
+          }
+      contacts.clear();
+      couplings.clear();
+      memory.clear();
+      statistics = ContactStatistics();
+    }
+
+
+
+    void
+    ContactHandler::set_normal_stiffness(const double k)
+    {
+      settings.normal_stiffness = k;
+    }
+
+
+
+    ContactHandler::Option
+    ContactHandler::make_option(const std::vector<Point<2>> &vertices,
+                                const unsigned int           vertex,
+                                const unsigned int           edge) const
+    {
+      const BoundaryEdge &e = edges[edge];
+      const Point<2>     &a = vertices[e.v0];
+      const Point<2>     &b = vertices[e.v1];
+      const Point<2>     &p = vertices[vertex];
+
+      Option o;
+      o.vertex                   = vertex;
+      o.edge                     = edge;
+      const Tensor<1, 2> t       = b - a;
+      o.length                   = t.norm();
+      o.tangent                  = t / o.length;
+      o.normal[0]                = o.tangent[1];
+      o.normal[1]                = -o.tangent[0];
+      o.ratio                    = ((p - a) * t) / (o.length * o.length);
+      o.gap                      = (p - a) * o.normal;
+      const double       clamped = std::clamp(o.ratio, 0., 1.);
+      const unsigned int k0      = e.local_vertex;
+      const unsigned int k1      = (k0 + 1) % 3;
+      const Point<2>     xi =
+        unit_vertex[k0] + clamped * (unit_vertex[k1] - unit_vertex[k0]);
+      const unsigned int n_cell_dofs = dofs.fe->n_dofs_per_cell();
+
+      o.dofs.resize(2 + n_cell_dofs);
+      o.wn.resize(2 + n_cell_dofs);
+      o.wt.resize(2 + n_cell_dofs);
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          o.dofs[c] = (*dofs.vertex_dofs)[vertex][c];
+          o.wn[c]   = o.normal[c];
+          o.wt[c]   = o.tangent[c];
+        }
+      const global_dof_index *cell_dofs =
+        dofs.cell_dofs->data() + std::size_t(e.cell) * n_cell_dofs;
+      for (unsigned int i = 0; i < n_cell_dofs; ++i)
+        {
+          const double       N = dofs.fe->shape_value(i, xi);
+          const unsigned int c = (*dofs.component)[i];
+          o.dofs[2 + i]        = cell_dofs[i];
+          o.wn[2 + i]          = -N * o.normal[c];
+          o.wt[2 + i]          = -N * o.tangent[c];
+        }
+      return o;
+    }
+
+
+
+    void
+    ContactHandler::transfer(Contact                     &c,
+                             const std::vector<Point<2>> &vertices) const
+    {
+      c.state  = State::open;
+      c.sign   = 0;
+      c.chosen = invalid;
+      if (c.vertex_a == invalid)
+        {
+          // A vertex-edge contact: its own memory, or that of the same
+          // vertex on a neighbouring edge it has slid over from.
+          const Option &o  = c.options[0];
+          c.chosen         = 0;
+          const auto found = memory.find(key(o.vertex, o.edge));
+          if (found != memory.end())
+            {
+              c.state  = found->second.state;
+              c.anchor = found->second.anchor;
+              c.sign   = found->second.sign;
+            }
+          else
+            for (const unsigned int v : {edges[o.edge].v0, edges[o.edge].v1})
+              for (const unsigned int other : edges_at_vertex[v])
+                {
+                  const auto near = memory.find(key(o.vertex, other));
+                  if (other == o.edge || near == memory.end())
+                    continue;
+                  c.state = near->second.state;
+                  c.sign  = near->second.sign;
+                  // The old anchor point, projected on this edge.
+                  const Point<2> &a0 = vertices[edges[other].v0];
+                  const Point<2> &b0 = vertices[edges[other].v1];
+                  const Point<2>  x  = a0 + near->second.anchor * (b0 - a0);
+                  const Point<2> &a  = vertices[edges[o.edge].v0];
+                  c.anchor =
+                    ((x - a) * o.tangent) / o.length; // ratio on this edge
+                }
+        }
+      else
+        {
+          for (unsigned int i = 0; i < c.options.size(); ++i)
+            {
+              const auto found =
+                memory.find(key(c.options[i].vertex, c.options[i].edge));
+              if (found != memory.end())
+                {
+                  c.chosen = i;
+                  c.state  = found->second.state;
+                  c.anchor = found->second.anchor;
+                  c.sign   = found->second.sign;
+                  break;
+                }
+            }
+          if (c.chosen == invalid &&
+              memory.count({c.vertex_a, c.vertex_b, invalid}) > 0)
+            c.state = State::vertex_spring;
+        }
+      // An open contact that already touches (no gap) starts closed: left
+      // open, its vertex would first move freely through the whole step
+      // and then hit the spring, an impact that an undamped integrator
+      // keeps ringing. (A pair whose edge is not chosen yet stays open.)
+      if (c.state == State::open && c.chosen != invalid &&
+          c.options[c.chosen].gap <= settings.state_tolerance)
+        {
+          c.state  = State::locked;
+          c.anchor = c.options[c.chosen].ratio;
+        }
+      // Open and sliding contacts anchor the shear spring at the vertex's
+      // present projection, should they lock within this step.
+      if (c.chosen != invalid && c.state != State::locked)
+        c.anchor = c.options[c.chosen].ratio;
+    }
+
+
+
+    void
+    ContactHandler::begin_step(const std::vector<Point<2>> &vertices,
+                               const double                 threshold)
+    {
+      start_vertices          = vertices;
+      statistics.n_iterations = 0;
+      contacts.clear();
+      couplings.clear();
+
+      const std::vector<Candidate> candidates =
+        detect(vertices, edges, threshold);
+      statistics.n_candidates = candidates.size();
+
+      const unsigned int n_cell_dofs = dofs.fe->n_dofs_per_cell();
+      // Is the vertex one of the nodes of the edge's cell (the third vertex
+      // of a thin triangle, or a mesh neighbour)?
+      const auto in_cell = [&](const unsigned int v, const unsigned int e) {
+        const global_dof_index  dof = (*dofs.vertex_dofs)[v][0];
+        const global_dof_index *cd =
+          dofs.cell_dofs->data() + std::size_t(edges[e].cell) * n_cell_dofs;
+        return std::find(cd, cd + n_cell_dofs, dof) != cd + n_cell_dofs;
+      };
+      const auto remembered = [&](const unsigned int v, const unsigned int e) {
+        if (memory.count(key(v, e)) > 0)
+          return true;
+        for (const unsigned int w : {edges[e].v0, edges[e].v1})
+          for (const unsigned int other : edges_at_vertex[w])
+            if (memory.count(key(v, other)) > 0)
+              return true;
+        return false;
+      };
+      const auto other_end = [&](const unsigned int e, const unsigned int v) {
+        return edges[e].v0 == v ? edges[e].v1 : edges[e].v0;
+      };
+      // A vertex can touch an edge only if they face each other: the
+      // outward normal at the vertex (the mean of its edges' normals) and
+      // the edge's normal point against each other. This rules out the
+      // other vertices of the same straight side, every vertex of a
+      // convex block against its own edges, and the far face of a thin
+      // block.
+      const auto outward = [&](const unsigned int e) {
+        const Tensor<1, 2> t = vertices[edges[e].v1] - vertices[edges[e].v0];
+        return Tensor<1, 2>({t[1], -t[0]}) / t.norm();
+      };
+      const auto facing = [&](const unsigned int v, const unsigned int e) {
+        Tensor<1, 2> n;
+        for (const unsigned int f : edges_at_vertex[v])
+          n += outward(f);
+        return n * outward(e) < -1e-3 * n.norm();
+      };
+
+      // 1. Vertex-edge candidates. A vertex near a convex (or straight)
+      // corner of a boundary may project into both edges there; it then
+      // touches one of them: the remembered one, else the one it is
+      // farthest outside of. New candidates that start deep inside the
+      // other body (the far face of a thin block) are not contacts.
+      std::vector<std::pair<unsigned int, unsigned int>> vertex_edge;
+      for (std::size_t i = 0; i < candidates.size();)
+        {
+          std::size_t j = i;
+          while (j < candidates.size() &&
+                 candidates[j].vertex == candidates[i].vertex)
+            ++j;
+          std::vector<const Candidate *> list;
+          for (std::size_t k = i; k < j; ++k)
+            {
+              const Candidate &c = candidates[k];
+              if (c.type != CandidateType::vertex_edge ||
+                  in_cell(c.vertex, c.edge) || !facing(c.vertex, c.edge))
+                continue;
+              if (c.distance < -settings.ignore_depth &&
+                  !remembered(c.vertex, c.edge))
+                continue;
+              list.push_back(&c);
+            }
+          std::vector<bool> dropped(list.size(), false);
+          for (unsigned int a = 0; a < list.size(); ++a)
+            for (unsigned int b = a + 1; b < list.size(); ++b)
+              {
+                const BoundaryEdge &ea = edges[list[a]->edge];
+                const BoundaryEdge &eb = edges[list[b]->edge];
+                // Consecutive edges: in -> corner -> out.
+                const BoundaryEdge *in = nullptr, *out = nullptr;
+                if (ea.v1 == eb.v0)
+                  in = &ea, out = &eb;
+                else if (eb.v1 == ea.v0)
+                  in = &eb, out = &ea;
+                if (in == nullptr)
+                  continue;
+                const Tensor<1, 2> t_in = vertices[in->v1] - vertices[in->v0];
+                const Tensor<1, 2> t_out =
+                  vertices[out->v1] - vertices[out->v0];
+                if (cross(t_in, t_out) < -1e-12 * t_in.norm() * t_out.norm())
+                  continue; // concave corner: both faces may touch
+                const bool ra = remembered(list[a]->vertex, list[a]->edge);
+                const bool rb = remembered(list[b]->vertex, list[b]->edge);
+                const bool drop_a =
+                  (ra != rb) ? rb : list[a]->distance < list[b]->distance;
+                dropped[drop_a ? a : b] = true;
+              }
+          for (unsigned int a = 0; a < list.size(); ++a)
+            if (!dropped[a])
+              vertex_edge.emplace_back(list[a]->vertex, list[a]->edge);
+          i = j;
+        }
+      // vertex_edge is sorted by vertex (the candidates are).
+      const auto has_vertex_edge_at = [&](const unsigned int v,
+                                          const unsigned int corner) {
+        auto range = std::equal_range(vertex_edge.begin(),
+                                      vertex_edge.end(),
+                                      std::make_pair(v, 0u),
+                                      [](const auto &x, const auto &y) {
+                                        return x.first < y.first;
+                                      });
+        for (auto it = range.first; it != range.second; ++it)
+          if (edges[it->second].v0 == corner || edges[it->second].v1 == corner)
+            return true;
+        return false;
+      };
+
+      for (const auto &[v, e] : vertex_edge)
+        {
+          Contact c;
+          c.options.push_back(make_option(vertices, v, e));
+          c.friction = std::min(edge_friction[e], vertex_friction[v]);
+          contacts.push_back(std::move(c));
+        }
+
+      // 2. Vertex-vertex pairs: a vertex whose closest point on an edge is
+      // that edge's end vertex, unless one of the two already touches an
+      // edge at the other (then that vertex-edge contact holds the pair).
+      std::set<std::pair<unsigned int, unsigned int>> pairs;
+      for (const Candidate &c : candidates)
+        if (c.type == CandidateType::vertex_vertex)
+          {
+            const unsigned int corner =
+              c.edge_ratio < 0.5 ? edges[c.edge].v0 : edges[c.edge].v1;
+            if (in_cell(c.vertex, c.edge) ||
+                has_vertex_edge_at(c.vertex, corner))
+              continue;
+            pairs.insert(std::minmax(c.vertex, corner));
+          }
+      for (const auto &[a, b] : pairs)
+        {
+          if (has_vertex_edge_at(b, a))
+            continue;
+          bool neighbours = false;
+          for (const unsigned int e : edges_at_vertex[a])
+            neighbours = neighbours || other_end(e, a) == b;
+          if (neighbours)
+            continue;
+
+          // Edge-edge: an edge at a and an edge at b leave the pair in the
+          // same direction and overlap. Then a touches b's edge at its
+          // end point, and nothing is indeterminate.
+          unsigned int face_edge = invalid;
+          for (const unsigned int e : edges_at_vertex[b])
+            for (const unsigned int f : edges_at_vertex[a])
+              {
+                Tensor<1, 2> we = vertices[other_end(e, b)] - vertices[b];
+                Tensor<1, 2> wf = vertices[other_end(f, a)] - vertices[a];
+                if (we * wf > parallel_cosine * we.norm() * wf.norm() &&
+                    facing(a, e))
+                  face_edge = e;
+              }
+          Contact c;
+          if (face_edge != invalid)
+            {
+              c.options.push_back(make_option(vertices, a, face_edge));
+              const Option &o = c.options[0];
+              if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
+                continue; // a is beyond b's edge: the edges do not overlap
+              if (o.gap < -settings.ignore_depth && !remembered(a, face_edge))
+                continue; // the other side of a thin body
+            }
+          else
+            {
+              c.vertex_a = a;
+              c.vertex_b = b;
+              for (const unsigned int e : edges_at_vertex[b])
+                if (facing(a, e))
+                  c.options.push_back(make_option(vertices, a, e));
+              for (const unsigned int f : edges_at_vertex[a])
+                if (facing(b, f))
+                  c.options.push_back(make_option(vertices, b, f));
+              if (c.options.empty())
+                continue;
+              // A new pair whose vertex starts deep inside the other's
+              // corner (behind both of its edges) is not a contact: the
+              // two vertices lie on opposite sides of a thin body.
+              bool known = false;
+              for (const Option &o : c.options)
+                known = known || remembered(o.vertex, o.edge);
+              known =
+                known || memory.count({c.vertex_a, c.vertex_b, invalid}) > 0;
+              double depth = 0;
+              for (const unsigned int v : {a, b})
+                {
+                  double inside = std::numeric_limits<double>::max();
+                  for (const Option &o : c.options)
+                    if (o.vertex == v)
+                      inside = std::min(inside, -o.gap);
+                  if (inside < std::numeric_limits<double>::max())
+                    depth = std::max(depth, inside);
+                }
+              if (!known && depth > settings.ignore_depth)
+                continue;
+            }
+          c.friction = std::min(vertex_friction[a], vertex_friction[b]);
+          contacts.push_back(std::move(c));
+        }
+
+      for (Contact &c : contacts)
+        {
+          transfer(c, vertices);
+          c.start_state  = c.state;
+          c.start_chosen = c.chosen;
+          c.start_anchor = c.anchor;
+          c.start_sign   = c.sign;
+          for (const Option &o : c.options)
+            couplings.emplace_back(o.vertex, edges[o.edge].cell);
+        }
+      std::sort(couplings.begin(), couplings.end());
+      couplings.erase(std::unique(couplings.begin(), couplings.end()),
+                      couplings.end());
+      statistics.n_contacts = contacts.size();
+    }
+
+
+
+    void
+    ContactHandler::restart_step()
+    {
+      statistics.n_iterations = 0;
+      for (Contact &c : contacts)
+        {
+          c.flips  = 0;
+          c.state  = c.start_state;
+          c.chosen = c.start_chosen;
+          c.anchor = c.start_anchor;
+          c.sign   = c.start_sign;
+        }
+    }
+
+
+
+    bool
+    ContactHandler::has_springs() const
+    {
+      for (const Contact &c : contacts)
+        if (c.state != State::open)
+          return true;
+      return false;
+    }
+
+
+
+    void
+    ContactHandler::assemble(dealii::SparseMatrix<double> &matrix,
+                             dealii::Vector<double>       &rhs) const
+    {
+      const double kn = settings.normal_stiffness;
+      for (const Contact &c : contacts)
+        {
+          if (c.state == State::vertex_spring)
+            {
+              // Thesis 6.5-6.12: a spring on the relative displacement of
+              // the two vertices in this step, a hinge between them.
+              const auto &da = (*dofs.vertex_dofs)[c.vertex_a];
+              const auto &db = (*dofs.vertex_dofs)[c.vertex_b];
+              for (unsigned int i = 0; i < 2; ++i)
+                {
+                  matrix.add(da[i], da[i], kn);
+                  matrix.add(db[i], db[i], kn);
+                  matrix.add(da[i], db[i], -kn);
+                  matrix.add(db[i], da[i], -kn);
+                }
+              continue;
+            }
+          if (c.state == State::open || c.chosen == invalid)
+            continue;
+          add_springs(c.options[c.chosen],
+                      c.state,
+                      c.anchor,
+                      c.sign,
+                      c.friction,
+                      &matrix,
+                      rhs);
+        }
+    }
+
+
+
+    void
+    ContactHandler::add_springs(const Option                 &o,
+                                const State                   state,
+                                const double                  anchor,
+                                const int                     sign,
+                                const double                  friction,
+                                dealii::SparseMatrix<double> *matrix,
+                                dealii::Vector<double>       &rhs) const
+    {
+      const double       kn = settings.normal_stiffness;
+      const double       ks = settings.shear_ratio * kn;
+      const unsigned int n  = o.dofs.size();
+      // Normal spring: energy kn/2 (g0 + e_n.d)^2.
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          rhs[o.dofs[i]] -= kn * o.gap * o.wn[i];
+          if (matrix != nullptr)
+            for (unsigned int j = 0; j < n; ++j)
+              matrix->add(o.dofs[i], o.dofs[j], kn * o.wn[i] * o.wn[j]);
+        }
+      if (state == State::locked)
+        {
+          // Shear spring to the anchor: energy ks/2 (s0 + e_t.d)^2.
+          const double s0 = (o.ratio - anchor) * o.length;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              rhs[o.dofs[i]] -= ks * s0 * o.wt[i];
+              if (matrix != nullptr)
+                for (unsigned int j = 0; j < n; ++j)
+                  matrix->add(o.dofs[i], o.dofs[j], ks * o.wt[i] * o.wt[j]);
+            }
+        }
+      else if (sign != 0 && friction > 0.)
+        {
+          // Coulomb friction -sign mu N along the tangent, with the normal
+          // force N = -kn (g0 + e_n.d) of the same solve: the force vector
+          // sign mu kn (g0 + e_n.d) e_t, whose d-dependent part goes to the
+          // (non-symmetric) matrix.
+          const double f = sign * friction * kn;
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              rhs[o.dofs[i]] += f * o.gap * o.wt[i];
+              if (matrix != nullptr)
+                for (unsigned int j = 0; j < n; ++j)
+                  matrix->add(o.dofs[i], o.dofs[j], -f * o.wt[i] * o.wn[j]);
+            }
+        }
+    }
+
+
+
+    void
+    ContactHandler::start_forces(dealii::Vector<double> &force) const
+    {
+      force = 0;
+      for (const Contact &c : contacts)
+        if (c.chosen != invalid && c.chosen == c.start_chosen &&
+            (c.state == State::locked || c.state == State::sliding) &&
+            (c.start_state == State::locked || c.start_state == State::sliding))
+          add_springs(c.options[c.start_chosen],
+                      c.start_state,
+                      c.start_anchor,
+                      c.start_sign,
+                      c.friction,
+                      nullptr,
+                      force);
+    }
+
+
+
+    void
+    ContactHandler::newmark_correction(dealii::Vector<double> &force) const
+    {
+      // The contact forces the inertia force holds from the last step's
+      // end are replaced by the start forces of the contacts that are
+      // closed at both ends of this step.
+      start_forces(force);
+      if (end_force.size() == force.size())
+        force -= end_force;
+    }
+
+
+
+    State
+    ContactHandler::classify(const Contact                &c,
+                             const dealii::Vector<double> &d,
+                             int                          &sign) const
+    {
+      const Option &o = c.options[c.chosen];
+      const double  g = o.normal_gap(d);
+      const bool    was_closed =
+        c.state == State::locked || c.state == State::sliding;
+      sign = 0;
+      // A band of +-tolerance around contact keeps contacts that carry no
+      // force (faces that just touch) from flipping between solves.
+      if (g > settings.state_tolerance ||
+          (!was_closed && g >= -settings.state_tolerance))
+        return State::open;
+      if (g > 0.)
+        {
+          sign = c.sign; // touching without force: keep the state
+          return c.state;
+        }
+
+      const double kn        = settings.normal_stiffness;
+      const double limit     = c.friction * kn * std::max(-g, 0.);
+      const double increment = o.tangential_increment(d);
+      if (limit <= 0.)
+        return State::sliding; // frictionless: never locked
+      if (c.state == State::sliding && c.sign != 0)
+        {
+          // Keeps sliding until the relative motion reverses.
+          if (c.sign * increment >= -settings.state_tolerance)
+            {
+              sign = c.sign;
+              return State::sliding;
+            }
+          return State::locked;
+        }
+      // Open or locked (or sliding without a direction yet): the shear
+      // spring against the Coulomb limit.
+      const double s = (o.ratio - c.anchor) * o.length + increment;
+      if (settings.shear_ratio * kn * std::abs(s) > limit)
+        {
+          sign = s > 0. ? 1 : -1;
+          return State::sliding;
+        }
+      return State::locked;
+    }
+
+
+
+    unsigned int
+    ContactHandler::entrance_option(const Contact                   &c,
+                                    const std::vector<unsigned int> &inside,
+                                    const dealii::Vector<double>    &d) const
+    {
+      unsigned int shortest = inside[0];
+      for (const unsigned int i : inside)
+        if (c.options[i].normal_gap(d) > c.options[shortest].normal_gap(d))
+          shortest = i;
+      if (settings.vertex_vertex_method ==
+          parameters::VertexVertexMethod::shortest_path)
+        return shortest;
+
+      // Thesis 6.3: the vertex entered through the edge whose segment (not
+      // its extension, 6.18) its straight trajectory crossed first.
+      unsigned int best   = invalid;
+      double       best_t = std::numeric_limits<double>::max();
+      bool         tie    = false;
+      for (const unsigned int i : inside)
+        {
+          const Option &o  = c.options[i];
+          const double  g0 = o.gap, g1 = o.normal_gap(d);
+          if (g0 < 0. || g1 >= 0.)
+            continue;
+          const double t = g0 / (g0 - g1);
+          const double r = o.ratio + t * o.tangential_increment(d) / o.length;
+          if (r < -1e-9 || r > 1. + 1e-9)
+            continue;
+          if (t < best_t - 1e-9)
+            {
+              best   = i;
+              best_t = t;
+              tie    = false;
+            }
+          else if (t <= best_t + 1e-9)
+            tie = true;
+        }
+      if (best == invalid)
+        return shortest; // penetrating from the start: no trajectory
+      return tie ? invalid : best;
+    }
+
+
+
+    unsigned int
+    ContactHandler::sliding_option(const Contact                &c,
+                                   const dealii::Vector<double> &d) const
+    {
+      // Thesis 6.2: after a solve with the temporary spring, the vertex
+      // slides onto the edge most aligned with its motion relative to the
+      // other vertex. (The thesis compares sin of the angles; ndda compares
+      // the angles themselves, so that an edge pointing against the motion
+      // is never chosen.)
+      unsigned int best     = invalid;
+      double       best_cos = -2, second_cos = -2;
+      for (unsigned int i = 0; i < c.options.size(); ++i)
+        {
+          const Option      &o = c.options[i];
+          const unsigned int corner =
+            o.vertex == c.vertex_a ? c.vertex_b : c.vertex_a;
+          Tensor<1, 2> u;
+          for (unsigned int k = 0; k < 2; ++k)
+            u[k] = d[(*dofs.vertex_dofs)[o.vertex][k]] -
+                   d[(*dofs.vertex_dofs)[corner][k]];
+          if (u.norm() == 0.)
+            return invalid;
+          const Tensor<1, 2> r =
+            edges[o.edge].v0 == corner ? o.tangent : -o.tangent;
+          const double cosine = (r * u) / u.norm();
+          if (cosine > best_cos)
+            {
+              second_cos = best_cos;
+              best_cos   = cosine;
+              best       = i;
+            }
+          else if (cosine > second_cos)
+            second_cos = cosine;
+        }
+      return (best_cos - second_cos < 1e-9) ? invalid : best;
+    }
+
+
+
+    bool
+    ContactHandler::update_states(const dealii::Vector<double> &d)
+    {
+      bool changed = false;
+      for (Contact &c : contacts)
+        {
+          if (c.chosen == invalid)
+            {
+              // An unresolved vertex-vertex pair.
+              unsigned int option = invalid;
+              if (c.state == State::vertex_spring)
+                {
+                  option = sliding_option(c, d);
+                  if (option == invalid)
+                    continue; // symmetric: the spring stays
+                }
+              else
+                {
+                  // A vertex has entered the other's corner if it ends
+                  // behind the lines of both edges there, within their
+                  // lengths.
+                  std::vector<unsigned int> inside;
+                  for (const unsigned int v : {c.vertex_a, c.vertex_b})
+                    {
+                      std::vector<unsigned int> mine;
+                      bool                      all = true;
+                      for (unsigned int i = 0; i < c.options.size(); ++i)
+                        if (c.options[i].vertex == v)
+                          {
+                            const Option &o = c.options[i];
+                            const double  r =
+                              o.ratio + o.tangential_increment(d) / o.length;
+                            all = all &&
+                                  o.normal_gap(d) < -settings.state_tolerance &&
+                                  r > -1e-9 && r < 1. + 1e-9;
+                            mine.push_back(i);
+                          }
+                      if (all)
+                        inside.insert(inside.end(), mine.begin(), mine.end());
+                    }
+                  if (inside.empty())
+                    continue;
+                  option = entrance_option(c, inside, d);
+                  if (option == invalid)
+                    {
+                      c.state = State::vertex_spring;
+                      changed = true;
+                      continue;
+                    }
+                }
+              c.chosen = option;
+              c.anchor = c.options[option].ratio;
+              c.state  = State::open;
+              int sign;
+              c.state = classify(c, d, sign);
+              c.sign  = sign;
+              if (c.state == State::open)
+                c.chosen = invalid;
+              changed = true;
+              continue;
+            }
+
+          int   sign;
+          State state = classify(c, d, sign);
+          // Contacts that carry almost no force can make the iteration
+          // cycle (closing one opens another). A contact that has changed
+          // between open and closed three times in this step may still
+          // close but no longer open in this step: it holds a little
+          // tension rather than letting its vertex through.
+          if ((state == State::open) != (c.state == State::open))
+            {
+              if (c.flips >= 3 && state == State::open)
+                state = c.state, sign = c.sign;
+              else
+                ++c.flips;
+            }
+          if (state != c.state || sign != c.sign)
+            changed = true;
+          if (state == State::locked && c.state != State::locked)
+            c.anchor = c.options[c.chosen].ratio;
+          c.state = state;
+          c.sign  = sign;
+          if (state == State::open && c.vertex_a != invalid)
+            c.chosen = invalid; // a pair that separates is open again
+        }
+      return changed;
+    }
+
+
+
+    double
+    ContactHandler::max_penetration(const dealii::Vector<double> &d) const
+    {
+      double p = 0;
+      for (const Contact &c : contacts)
+        if (c.chosen != invalid &&
+            (c.state == State::locked || c.state == State::sliding))
+          p = std::max(p, -c.options[c.chosen].normal_gap(d));
+      return p;
+    }
+
+
+
+    void
+    ContactHandler::end_step(const dealii::Vector<double> &d)
+    {
+      const double kn = settings.normal_stiffness;
+      const double ks = settings.shear_ratio * kn;
+      memory.clear();
+      statistics.n_closed         = 0;
+      statistics.n_sliding        = 0;
+      statistics.n_vertex_springs = 0;
+      statistics.n_vertex_vertex  = 0;
+      statistics.spring_energy    = 0;
+      statistics.max_penetration  = max_penetration(d);
+      // The forces the integrator applied over the step: at its end (DDA)
+      // or the mean of start and end (Newmark).
+      dealii::Vector<double> applied(d.size());
+      if (settings.average_start_and_end)
+        {
+          start_forces(applied);
+          applied *= 0.5;
+        }
+      end_force.reinit(d.size());
+      for (const Contact &c : contacts)
+        {
+          if (c.vertex_a != invalid)
+            ++statistics.n_vertex_vertex;
+          if (c.state == State::vertex_spring)
+            {
+              ++statistics.n_vertex_springs;
+              memory[{c.vertex_a, c.vertex_b, invalid}] = {c.state, 0., 0};
+              Tensor<1, 2> u;
+              for (unsigned int k = 0; k < 2; ++k)
+                u[k] = d[(*dofs.vertex_dofs)[c.vertex_a][k]] -
+                       d[(*dofs.vertex_dofs)[c.vertex_b][k]];
+              statistics.spring_energy += 0.5 * kn * u.norm_square();
+              for (unsigned int k = 0; k < 2; ++k)
+                {
+                  end_force[(*dofs.vertex_dofs)[c.vertex_a][k]] -= kn * u[k];
+                  end_force[(*dofs.vertex_dofs)[c.vertex_b][k]] += kn * u[k];
+                }
+              continue;
+            }
+          if (c.state == State::open || c.chosen == invalid)
+            continue;
+          ++statistics.n_closed;
+          const Option &o         = c.options[c.chosen];
+          const double  g         = o.normal_gap(d);
+          const double  increment = o.tangential_increment(d);
+          statistics.spring_energy += 0.5 * kn * g * g;
+          // The force at the step's end: the springs' forces at d = 0 plus
+          // their stiffness times d.
+          {
+            Option at_end = o;
+            at_end.gap    = g;
+            double a      = c.anchor;
+            if (c.state == State::locked)
+              a -= increment / o.length;
+            add_springs(
+              at_end, c.state, a, c.sign, c.friction, nullptr, end_force);
+          }
+          double anchor = c.anchor;
+          if (c.state == State::locked)
+            {
+              const double s = (o.ratio - c.anchor) * o.length + increment;
+              statistics.spring_energy += 0.5 * ks * s * s;
+            }
+          else
+            {
+              ++statistics.n_sliding;
+              anchor = o.ratio + increment / o.length;
+            }
+          memory[key(o.vertex, o.edge)] = {c.state, anchor, c.sign};
+        }
+      applied.add(settings.average_start_and_end ? 0.5 : 1., end_force);
+      statistics.contact_work += applied * d;
+      statistics.dissipation =
+        -statistics.contact_work - statistics.spring_energy;
+    }
+
+
+
+    std::vector<std::tuple<unsigned int, unsigned int, unsigned int, State>>
+    ContactHandler::get_states() const
+    {
+      std::vector<std::tuple<unsigned int, unsigned int, unsigned int, State>>
+        states;
+      for (const Contact &c : contacts)
+        if (c.chosen != invalid)
+          {
+            const Option &o = c.options[c.chosen];
+            states.emplace_back(o.vertex,
+                                edges[o.edge].v0,
+                                edges[o.edge].v1,
+                                c.state);
+          }
+        else
+          states.emplace_back(c.vertex_a, c.vertex_b, invalid, c.state);
+      return states;
+    }
+  } // namespace contact
+} // namespace ndda

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A block on a 30 degree incline under gravity (contact issue, first
+// "must show" item). The incline is a fixed elastic block whose top face
+// rises at 30 degrees; the 1 m x 0.5 m block lies on it, at rest, in exact
+// contact.
+//
+//  - friction angle 20 degrees: the block slides; along the slope it moves
+//    s(t) = g (sin a - cos a tan phi) t^2 / 2, checked to 0.5 % at t = 1 s
+//    for time steps 1e-4, 5e-4 and 2e-3 s;
+//  - frictionless: s(t) = g sin a t^2 / 2, checked to 0.1 %;
+//  - friction angle 35 degrees: the block sticks; its creep in 1 s must stay
+//    below 0.1 mm for penalties 10 E, 100 E and 1000 E.
+//
+// In every run no contact may penetrate deeper than the scene's tolerance
+// (Contact/Maximum penetration ratio of half the scene height). The
+// measured errors are printed.
+
+#include <deal.II/base/timer.h>
+
+#include <cmath>
+
+#include "tests.h"
+
+using namespace ndda_tests;
+
+namespace
+{
+  const double slope = 30. * M_PI / 180.;
+  const double g     = 9.81;
+
+  /** A point at distance s along the slope and h above it. */
+  std::string
+  at(const double s, const double h)
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << s * std::cos(slope) - h * std::sin(slope)
+        << ", " << s * std::sin(slope) + h * std::cos(slope);
+    return out.str();
+  }
+
+  const std::string scene = R"(
+subsection Control
+  set Analysis type   = dynamic
+  set Time integrator = {integrator}
+  set Time step       = {dt}
+  set End time        = 1
+  set Maximum displacement ratio = 0.01
+end
+subsection Contact
+  set Penalty factor = {penalty}
+  set Maximum penetration ratio = 1e-3
+end
+subsection Materials
+  set Names = rock
+  subsection rock
+    set Density = 2600
+    set Young's modulus = 10e9
+    set Poisson's ratio = 0.25
+  end
+  subsection Joint
+    set Friction angle = {phi}
+  end
+end
+subsection Geometry
+  set Blocks = incline, block
+  subsection incline
+    set Outer boundary = 0, 0; {base_x}, 0; {base_top}
+    set Material = rock
+    set Mesh size = 0.5
+  end
+  subsection block
+    set Outer boundary = {b0}; {b1}; {b2}; {b3}
+    set Material = rock
+    set Mesh size = 0.25
+  end
+end
+subsection Loads
+  set Gravity = 0; -9.81
+end
+subsection Boundary conditions
+  set Names = ground
+  subsection ground
+    set Type = fixed
+    set Segments = 0, 0, {base_x}, 0; {base_x}, 0, {base_top_comma}
+  end
+end
+subsection Output
+  set Measure points = {centre}
+end
+)";
+
+  struct Result
+  {
+    double       displacement; // along the slope, downwards positive
+    double       max_penetration;
+    double       tolerance;
+    double       seconds;
+    unsigned int steps, iterations, cuts;
+  };
+
+  Result
+  run(const std::string &integrator,
+      const double       dt,
+      const double       phi,
+      const double       penalty)
+  {
+    const double      length = 5.; // slope length
+    const double      base_x = length * std::cos(slope);
+    const double      s0 = 3.5, w = 1., h = 0.5; // block position and size
+    const std::string top       = at(length, 0);
+    std::string       top_comma = top;
+    const auto        parameters =
+      read_parameters(substitute(scene,
+                                 {{"integrator", integrator},
+                                  {"dt", std::to_string(dt)},
+                                  {"penalty", std::to_string(penalty)},
+                                  {"phi", std::to_string(phi)},
+                                  {"base_x", std::to_string(base_x)},
+                                  {"base_top", top},
+                                  {"base_top_comma", top_comma},
+                                  {"b0", at(s0, 0)},
+                                  {"b1", at(s0 + w, 0)},
+                                  {"b2", at(s0 + w, h)},
+                                  {"b3", at(s0, h)},
+                                  {"centre", at(s0 + w / 2, h / 2)}}),
+                      "sliding_block");
+    ndda::Simulator<2> simulator(parameters);
+    dealii::Timer      timer;
+    simulator.setup();
+    Result     result{};
+    const auto box = simulator.get_mesh().bounding_box();
+    result.tolerance =
+      1e-3 * 0.5 * (box.second[1] - box.first[1]); // as the Simulator's
+    while (simulator.get_time() < 1 - 1e-12)
+      {
+        simulator.do_time_step();
+        const auto &c = simulator.get_contacts().get_statistics();
+        result.max_penetration =
+          std::max(result.max_penetration, c.max_penetration);
+        result.iterations += c.n_iterations;
+      }
+    result.seconds = timer.wall_time();
+    result.steps   = simulator.get_step_number();
+    const auto &u  = simulator.get_measure_histories()[0].back().displacement;
+    result.displacement = -(u[0] * std::cos(slope) + u[1] * std::sin(slope));
+    return result;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::cout << std::setprecision(4);
+
+  const auto report = [](const std::string &what, const Result &r) {
+    std::cout << "    " << what << ": " << r.steps << " steps, "
+              << double(r.iterations) / r.steps
+              << " open-close iterations per step, max penetration "
+              << r.max_penetration << " m (tolerance " << r.tolerance << " m), "
+              << r.seconds << " s" << std::endl;
+    check(r.max_penetration <= r.tolerance, what + ": penetration");
+  };
+
+  // Sliding with friction.
+  const double phi = 20. * M_PI / 180.;
+  const double expected =
+    0.5 * g * (std::sin(slope) - std::cos(slope) * std::tan(phi));
+  std::cout << "friction angle 20 deg: expected slide " << expected
+            << " m in 1 s" << std::endl;
+  for (const double dt : {1e-4, 5e-4, 2e-3})
+    {
+      const Result r     = run("DDA", dt, 20, 100);
+      const double error = r.displacement / expected - 1;
+      std::cout << "  dt = " << dt << ": slide " << r.displacement
+                << " m, error " << 100 * error << " %" << std::endl;
+      report("friction, dt = " + std::to_string(dt), r);
+      check(std::abs(error) < 5e-3, "sliding with friction within 0.5 %");
+    }
+
+  // Frictionless.
+  const double free_slide = 0.5 * g * std::sin(slope);
+  std::cout << "frictionless: expected slide " << free_slide << " m in 1 s"
+            << std::endl;
+  for (const auto &[integrator, dt] :
+       std::vector<std::pair<std::string, double>>{{"DDA", 5e-4},
+                                                   {"DDA", 2e-3},
+                                                   {"Newmark", 5e-4}})
+    {
+      const Result r     = run(integrator, dt, 0, 100);
+      const double error = r.displacement / free_slide - 1;
+      std::cout << "  " << integrator << ", dt = " << dt << ": slide "
+                << r.displacement << " m, error " << 100 * error << " %"
+                << std::endl;
+      report("frictionless, dt = " + std::to_string(dt), r);
+      check(std::abs(error) < 1e-3, "frictionless sliding within 0.1 %");
+    }
+
+  // Sticking: tan 35 > tan 30.
+  std::cout << "friction angle 35 deg: the block must stick" << std::endl;
+  for (const double penalty : {10., 100., 1000.})
+    {
+      const Result r = run("DDA", 1e-3, 35, penalty);
+      std::cout << "  penalty " << penalty << " E: creep " << r.displacement
+                << " m" << std::endl;
+      report("stick, penalty " + std::to_string(penalty), r);
+      check(std::abs(r.displacement) < 1e-4, "creep below 0.1 mm");
+    }
+  std::cout << "OK" << std::endl;
+}
