@@ -298,6 +298,9 @@ namespace ndda
     fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
     face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
     dof_handler.distribute_dofs(*fe);
+    cell_material.resize(mesh.get_triangulation().n_active_cells());
+    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+      cell_material[cell->active_cell_index()] = cell->material_id();
 
     // Index caches for the loops of the time step: deal.II's iterators and
     // get_dof_indices() cost more than the arithmetic of a P1 cell.
@@ -597,10 +600,6 @@ namespace ndda
     // The friction coefficient of each boundary edge's side: its
     // material's joint friction angle, or the scene's joint angle.
     const auto edges = contact::boundary_edges(mesh.get_block_mesh());
-    std::vector<unsigned int> cell_material(
-      mesh.get_triangulation().n_active_cells());
-    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
-      cell_material[cell->active_cell_index()] = cell->material_id();
     // The edges index the triangles of the block mesh, which are the
     // active cells of the triangulation, vertex order kept.
     {
@@ -895,18 +894,42 @@ namespace ndda
   {
     // f_int = sum over cells of t * int B^T sigma (thesis 3.25 with the
     // accumulated stress in place of the initial stress).
+    // Computed from the stresses every step (not updated by K d and
+    // turned with the spin), so that it is self-equilibrated in every
+    // cell: turning nodal forces by nodal spins that differ from node to
+    // node would leave a net force on a free, vibrating block.
+    //
+    // The strain energy is the state function sum t int sigma : S : sigma
+    // / 2 (S = C^-1) less its initial value; unlike the accumulated work
+    // d . f_int, it does not drift when stresses are turned with the spin.
     internal_force            = 0;
     const unsigned int n_dofs = fe->n_dofs_per_cell();
     const unsigned int n_q    = element_cache.n_quadrature_points();
+    std::vector<SymmetricTensor<4, dim>> compliance;
+    for (const auto &C : element_cache.get_elasticity())
+      compliance.push_back(invert(C));
+    double energy = 0;
     for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
       {
-        const auto &data = element_cache[c];
-        const auto *dofs = &cell_dof_indices[c * n_dofs];
+        const auto        &data     = element_cache[c];
+        const auto        *dofs     = &cell_dof_indices[c * n_dofs];
+        const unsigned int material = cell_material[c];
         for (unsigned int q = 0; q < n_q; ++q)
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            internal_force[dofs[i]] +=
-              (data.strain[q * n_dofs + i] * stress[c][q]) * data.weight[q];
+          {
+            const auto &sigma = stress[c][q];
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              internal_force[dofs[i]] +=
+                (data.strain[q * n_dofs + i] * sigma) * data.weight[q];
+            energy +=
+              0.5 * (sigma * (compliance[material] * sigma)) * data.weight[q];
+          }
       }
+    if (!initial_strain_energy_known)
+      {
+        initial_strain_energy       = energy;
+        initial_strain_energy_known = true;
+      }
+    stored_strain_energy = energy - initial_strain_energy;
     // Bolts pull their anchors towards each other with their spring force.
     for (const auto &bolt : bolts)
       {
@@ -1353,17 +1376,10 @@ namespace ndda
         velocity.add(2. / dt, d);
       }
 
-    // Strain energy, exact for the linear increment:
-    // W += d . (f_int + K d / 2).
-    Vector<double> Kd(d.size());
-    stiffness_matrix.vmult(Kd, d);
-    stored_strain_energy += d * internal_force + 0.5 * (d * Kd);
-
     // Objective update: first turn the state of the step's start by the
     // increment's rotation, then add the increment's stress.
     if (control.rotate_with_spin)
       rotate_with_spin(d);
-    internal_force += Kd;
 
     // Stresses, per quadrature point: sigma += C eps(d).
     const unsigned int n_dofs = fe->n_dofs_per_cell();
@@ -1403,6 +1419,10 @@ namespace ndda
     load_work += 0.5 * (external_force * d + step_external_force * d);
     external_force = step_external_force;
 
+    // The internal force of the new stresses, and the strain energy they
+    // hold.
+    compute_internal_force();
+
     displacement += d;
     move_mesh(d);
     time += dt;
@@ -1416,10 +1436,10 @@ namespace ndda
   {
     // The small-rotation update moves points along straight lines: a
     // spinning block would not turn its velocity. As DDA does with its
-    // block rotation, turn each node's velocity (and acceleration and
-    // internal force) by the local rotation of the increment, and each
-    // cell's stress by the cell's rotation (Jaumann-like). See
-    // doc/theory.md.
+    // block rotation, turn each node's velocity (and inertia force) by the
+    // local rotation of the increment, and each cell's stress by the
+    // cell's rotation (Jaumann-like); the internal force follows from the
+    // turned stresses. See doc/theory.md.
     const unsigned int  n_dofs = fe->n_dofs_per_cell();
     const unsigned int  n_q    = element_cache.n_quadrature_points();
     std::vector<double> node_spin(node_dofs.size()),
@@ -1465,7 +1485,6 @@ namespace ndda
         const auto [i, j]   = node_dofs[n];
         rotate_pair(velocity, i, j, cs, sn);
         rotate_pair(inertia_force, i, j, cs, sn);
-        rotate_pair(internal_force, i, j, cs, sn);
       }
   }
 

@@ -447,19 +447,23 @@ namespace ndda
     std::vector<PointEvaluator>             measure_points;
     std::vector<std::vector<MeasureSample>> measure_histories;
 
-    double       time                   = 0;
-    double       time_step              = 0;
-    unsigned int step_number            = 0;
-    double       stored_strain_energy   = 0;
-    double       scene_half_height      = 0;
-    unsigned int last_solver_iterations = 0;
-    unsigned int step_cuts              = 0;
-    unsigned int n_matrix_rebuilds      = 0;
-    double       last_step_time         = 0;
-    double       max_increment          = 0;
-    bool         is_set_up              = false;
-    bool         parameters_from_file   = false;
-    double       last_dt                = 0;
+    double       time                        = 0;
+    double       time_step                   = 0;
+    unsigned int step_number                 = 0;
+    double       stored_strain_energy        = 0;
+    double       initial_strain_energy       = 0;
+    bool         initial_strain_energy_known = false;
+    /// Material id of every active cell.
+    std::vector<unsigned int> cell_material;
+    double                    scene_half_height      = 0;
+    unsigned int              last_solver_iterations = 0;
+    unsigned int              step_cuts              = 0;
+    unsigned int              n_matrix_rebuilds      = 0;
+    double                    last_step_time         = 0;
+    double                    max_increment          = 0;
+    bool                      is_set_up              = false;
+    bool                      parameters_from_file   = false;
+    double                    last_dt                = 0;
 
     TableHandler                                statistics;
     double                                      next_output_time = 0;

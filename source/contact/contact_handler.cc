@@ -23,6 +23,10 @@ namespace ndda
       /** Cosine of the largest angle between two edges taken as parallel. */
       constexpr double parallel_cosine = 0.99985; // 1 degree
 
+      /** Cosine of the largest kink at a vertex that a contact slides
+       * over keeping its state. */
+      constexpr double straight_cosine = 0.985; // 10 degrees
+
       double
       cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
       {
@@ -162,6 +166,7 @@ namespace ndda
               c.state  = found->second.state;
               c.anchor = found->second.anchor;
               c.sign   = found->second.sign;
+              c.offset = found->second.offset;
             }
           else
             for (const unsigned int v : {edges[o.edge].v0, edges[o.edge].v1})
@@ -170,8 +175,15 @@ namespace ndda
                   const auto near = memory.find(key(o.vertex, other));
                   if (other == o.edge || near == memory.end())
                     continue;
-                  c.state = near->second.state;
-                  c.sign  = near->second.sign;
+                  // Only across a (nearly) straight vertex: round a corner
+                  // the contact direction changes, and so does the state.
+                  const Tensor<1, 2> t =
+                    vertices[edges[other].v1] - vertices[edges[other].v0];
+                  if (t * o.tangent < straight_cosine * t.norm())
+                    continue;
+                  c.state  = near->second.state;
+                  c.sign   = near->second.sign;
+                  c.offset = near->second.offset;
                   // The old anchor point, projected on this edge.
                   const Point<2> &a0 = vertices[edges[other].v0];
                   const Point<2> &b0 = vertices[edges[other].v1];
@@ -193,12 +205,33 @@ namespace ndda
                   c.state  = found->second.state;
                   c.anchor = found->second.anchor;
                   c.sign   = found->second.sign;
+                  c.offset = found->second.offset;
                   break;
                 }
             }
           if (c.chosen == invalid &&
               memory.count({c.vertex_a, c.vertex_b, invalid}) > 0)
             c.state = State::vertex_spring;
+        }
+      // An open contact starts without offset; a contact that is new and
+      // already penetrates keeps its present penetration as its offset.
+      if (c.state == State::open)
+        c.offset =
+          c.chosen != invalid ?
+            std::min(0., c.options[c.chosen].gap + settings.state_tolerance) :
+            0.;
+      if (c.chosen != invalid)
+        c.options[c.chosen].gap -= c.offset;
+      // A contact closed at the last step's end that starts this step with
+      // a gap (the geometry has moved on) starts open.
+      if (c.state != State::open && c.chosen != invalid &&
+          c.state != State::vertex_spring &&
+          c.options[c.chosen].gap > settings.state_tolerance)
+        {
+          c.state = State::open;
+          c.sign  = 0;
+          c.options[c.chosen].gap += c.offset;
+          c.offset = 0;
         }
       // An open contact that already touches (no gap) starts closed: left
       // open, its vertex would first move freely through the whole step
@@ -248,6 +281,9 @@ namespace ndda
             if (memory.count(key(v, other)) > 0)
               return true;
         return false;
+      };
+      const auto c_friction = [&](const unsigned int a, const unsigned int b) {
+        return std::min(vertex_friction[a], vertex_friction[b]);
       };
       const auto other_end = [&](const unsigned int e, const unsigned int v) {
         return edges[e].v0 == v ? edges[e].v1 : edges[e].v0;
@@ -370,28 +406,39 @@ namespace ndda
           if (neighbours)
             continue;
 
-          // Edge-edge: an edge at a and an edge at b leave the pair in the
-          // same direction and overlap. Then a touches b's edge at its
-          // end point, and nothing is indeterminate.
-          unsigned int face_edge = invalid;
+          // Edge-edge: an edge e at b and an edge f at a leave the pair in
+          // the same direction and overlap. Then nothing is indeterminate:
+          // a touches e and b touches f, each at the end point of the
+          // edge. Both contacts are kept, so that when the corners move
+          // apart the one whose vertex slides onto the other's edge goes
+          // on with its state, and no contact appears already compressed.
+          unsigned int face_e = invalid, face_f = invalid;
           for (const unsigned int e : edges_at_vertex[b])
             for (const unsigned int f : edges_at_vertex[a])
               {
                 Tensor<1, 2> we = vertices[other_end(e, b)] - vertices[b];
                 Tensor<1, 2> wf = vertices[other_end(f, a)] - vertices[a];
                 if (we * wf > parallel_cosine * we.norm() * wf.norm() &&
-                    facing(a, e))
-                  face_edge = e;
+                    facing(a, e) && facing(b, f))
+                  face_e = e, face_f = f;
               }
           Contact c;
-          if (face_edge != invalid)
+          if (face_e != invalid)
             {
-              c.options.push_back(make_option(vertices, a, face_edge));
-              const Option &o = c.options[0];
-              if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
-                continue; // a is beyond b's edge: the edges do not overlap
-              if (o.gap < -settings.ignore_depth && !remembered(a, face_edge))
-                continue; // the other side of a thin body
+              for (const auto &[v, e] :
+                   {std::make_pair(a, face_e), std::make_pair(b, face_f)})
+                {
+                  Contact face;
+                  face.options.push_back(make_option(vertices, v, e));
+                  const Option &o = face.options[0];
+                  if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
+                    continue; // v is beyond the edge: no overlap
+                  if (o.gap < -settings.ignore_depth && !remembered(v, e))
+                    continue; // the other side of a thin body
+                  face.friction = c_friction(a, b);
+                  contacts.push_back(std::move(face));
+                }
+              continue;
             }
           else
             {
@@ -426,7 +473,7 @@ namespace ndda
               if (!known && depth > settings.ignore_depth)
                 continue;
             }
-          c.friction = std::min(vertex_friction[a], vertex_friction[b]);
+          c.friction = c_friction(a, b);
           contacts.push_back(std::move(c));
         }
 
@@ -455,6 +502,7 @@ namespace ndda
       for (Contact &c : contacts)
         {
           c.flips  = 0;
+          c.scale  = 1;
           c.state  = c.start_state;
           c.chosen = c.start_chosen;
           c.anchor = c.start_anchor;
@@ -504,6 +552,7 @@ namespace ndda
                       c.anchor,
                       c.sign,
                       c.friction,
+                      c.scale,
                       &matrix,
                       rhs);
         }
@@ -517,10 +566,11 @@ namespace ndda
                                 const double                  anchor,
                                 const int                     sign,
                                 const double                  friction,
+                                const double                  scale,
                                 dealii::SparseMatrix<double> *matrix,
                                 dealii::Vector<double>       &rhs) const
     {
-      const double       kn = settings.normal_stiffness;
+      const double       kn = scale * settings.normal_stiffness;
       const double       ks = settings.shear_ratio * kn;
       const unsigned int n  = o.dofs.size();
       // Normal spring: energy kn/2 (g0 + e_n.d)^2.
@@ -565,18 +615,33 @@ namespace ndda
     void
     ContactHandler::start_forces(dealii::Vector<double> &force) const
     {
+      // The contacts closed at both ends of the step with their full start
+      // force; those that open within the step with the fraction of it
+      // that makes their work equal to the spring energy they release
+      // (scale, see update_states()).
       force = 0;
       for (const Contact &c : contacts)
-        if (c.chosen != invalid && c.chosen == c.start_chosen &&
-            (c.state == State::locked || c.state == State::sliding) &&
-            (c.start_state == State::locked || c.start_state == State::sliding))
-          add_springs(c.options[c.start_chosen],
-                      c.start_state,
-                      c.start_anchor,
-                      c.start_sign,
-                      c.friction,
-                      nullptr,
-                      force);
+        {
+          const bool closed_at_start =
+            c.start_chosen != invalid &&
+            (c.start_state == State::locked || c.start_state == State::sliding);
+          if (!closed_at_start)
+            continue;
+          double scale = 0;
+          if (c.state == State::locked || c.state == State::sliding)
+            scale = c.chosen == c.start_chosen ? 1. : 0.;
+          else if (c.state == State::open)
+            scale = c.scale;
+          if (scale > 0.)
+            add_springs(c.options[c.start_chosen],
+                        c.start_state,
+                        c.start_anchor,
+                        c.start_sign,
+                        c.friction,
+                        scale,
+                        nullptr,
+                        force);
+        }
     }
 
 
@@ -727,6 +792,44 @@ namespace ndda
 
 
     bool
+    ContactHandler::update_scale(Contact &c, const dealii::Vector<double> &d)
+    {
+      // A spring that engages or lets go within the step acts for part of
+      // it only. With the average of start and end forces (Newmark), the
+      // energy-consistent force of the one-sided spring
+      // Phi(g) = kn/2 min(g, 0)^2 is -(Phi(g1) - Phi(g0)) / (g1 - g0)
+      // (a discrete gradient): for a contact that closes from the gap
+      // g0 > 0 to g1 < 0 it is the end force times g1 / (g1 - g0), for one
+      // that opens from g0 < 0 to g1 > 0 the start force times
+      // g0 / (g0 - g1). Without it, every impact would lose kn g0 g1 / 2.
+      const bool closed_at_start =
+        c.start_chosen != invalid &&
+        (c.start_state == State::locked || c.start_state == State::sliding);
+      const bool closed_now =
+        c.state == State::locked || c.state == State::sliding;
+      double scale = 1;
+      if (closed_now && !closed_at_start)
+        {
+          const Option &o  = c.options[c.chosen];
+          const double  g0 = o.gap, g1 = o.normal_gap(d);
+          if (g0 > 0. && g1 < 0.)
+            scale = g1 / (g1 - g0);
+        }
+      else if (!closed_now && closed_at_start)
+        {
+          const Option &o  = c.options[c.start_chosen];
+          const double  g0 = o.gap, g1 = o.normal_gap(d);
+          scale = (g0 < 0. && g1 > 0.) ? g0 / (g0 - g1) : 0.;
+        }
+      const bool changed =
+        std::abs(scale - c.scale) > 1e-3 * std::max(scale, c.scale);
+      c.scale = scale;
+      return changed;
+    }
+
+
+
+    bool
     ContactHandler::update_states(const dealii::Vector<double> &d)
     {
       bool changed = false;
@@ -784,6 +887,8 @@ namespace ndda
               c.sign  = sign;
               if (c.state == State::open)
                 c.chosen = invalid;
+              if (settings.average_start_and_end)
+                update_scale(c, d);
               changed = true;
               continue;
             }
@@ -810,6 +915,12 @@ namespace ndda
           c.sign  = sign;
           if (state == State::open && c.vertex_a != invalid)
             c.chosen = invalid; // a pair that separates is open again
+          // The scale depends on the solution it enters: a few
+          // iterations make it consistent; after that it is accepted as it
+          // is rather than cutting the step.
+          if (settings.average_start_and_end && update_scale(c, d) &&
+              statistics.n_iterations < 4)
+            changed = true;
         }
       return changed;
     }
@@ -823,7 +934,7 @@ namespace ndda
       for (const Contact &c : contacts)
         if (c.chosen != invalid &&
             (c.state == State::locked || c.state == State::sliding))
-          p = std::max(p, -c.options[c.chosen].normal_gap(d));
+          p = std::max(p, -c.options[c.chosen].normal_gap(d) - c.offset);
       return p;
     }
 
@@ -857,7 +968,7 @@ namespace ndda
           if (c.state == State::vertex_spring)
             {
               ++statistics.n_vertex_springs;
-              memory[{c.vertex_a, c.vertex_b, invalid}] = {c.state, 0., 0};
+              memory[{c.vertex_a, c.vertex_b, invalid}] = {c.state, 0., 0, 0.};
               Tensor<1, 2> u;
               for (unsigned int k = 0; k < 2; ++k)
                 u[k] = d[(*dofs.vertex_dofs)[c.vertex_a][k]] -
@@ -885,8 +996,14 @@ namespace ndda
             double a      = c.anchor;
             if (c.state == State::locked)
               a -= increment / o.length;
-            add_springs(
-              at_end, c.state, a, c.sign, c.friction, nullptr, end_force);
+            add_springs(at_end,
+                        c.state,
+                        a,
+                        c.sign,
+                        c.friction,
+                        c.scale,
+                        nullptr,
+                        end_force);
           }
           double anchor = c.anchor;
           if (c.state == State::locked)
@@ -899,7 +1016,7 @@ namespace ndda
               ++statistics.n_sliding;
               anchor = o.ratio + increment / o.length;
             }
-          memory[key(o.vertex, o.edge)] = {c.state, anchor, c.sign};
+          memory[key(o.vertex, o.edge)] = {c.state, anchor, c.sign, c.offset};
         }
       applied.add(settings.average_start_and_end ? 0.5 : 1., end_force);
       statistics.contact_work += applied * d;

@@ -68,6 +68,7 @@ namespace ndda
     const double                     t = materials.thickness;
 
     unsigned int n_computed = 0;
+    computed_cells.clear();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         CellData &d = data[cell->active_cell_index()];
@@ -87,6 +88,7 @@ namespace ndda
               continue;
           }
         ++n_computed;
+        computed_cells.push_back(cell->active_cell_index());
         fe_values.reinit(cell);
         mass_values.reinit(cell);
         const auto &material = materials.materials[cell->material_id()];

@@ -307,6 +307,14 @@ namespace ndda
         int          start_sign   = 0;
         /// Changes between open and closed in this step's iteration.
         unsigned int flips = 0;
+        /// Newmark: the fraction of the step's end force (closing) or start
+        /// force (opening) the integrator uses, see update_scale().
+        double scale = 1;
+        /// Penetration (m, <= 0) the contact already had when it first
+        /// closed; the normal spring acts on the gap beyond it (the chosen
+        /// option's gap has it subtracted), so that a contact that appears
+        /// inside an overlap does not add the overlap's spring energy.
+        double offset = 0;
       };
 
       /** What is carried from one step to the next, per contact key. */
@@ -315,6 +323,7 @@ namespace ndda
         State  state;
         double anchor;
         int    sign;
+        double offset;
       };
 
       static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
@@ -332,9 +341,9 @@ namespace ndda
       }
 
       /**
-       * Add the springs of a contact in @p state on option @p o: their
-       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
-       * stiffness to @p matrix.
+       * Add the springs of a contact in @p state on option @p o, all
+       * stiffnesses times @p scale: their forces at d = 0 to @p rhs and,
+       * unless @p matrix is null, their stiffness to @p matrix.
        */
       void
       add_springs(const Option                 &o,
@@ -342,12 +351,18 @@ namespace ndda
                   const double                  anchor,
                   const int                     sign,
                   const double                  friction,
+                  const double                  scale,
                   dealii::SparseMatrix<double> *matrix,
                   dealii::Vector<double>       &rhs) const;
 
       /** Carry the memory of the last step over to contact @p c. */
       void
       transfer(Contact &c, const std::vector<Point<2>> &vertices) const;
+
+      /** Update the scale of a contact that closes or opens within the
+       * step; true if it changed noticeably. */
+      bool
+      update_scale(Contact &c, const dealii::Vector<double> &d);
 
       /** Closed-state classification of a resolved contact. */
       State

@@ -105,9 +105,17 @@ namespace ndda
       return n_q_points;
     }
 
+    /** The cells whose data the last call to update() computed. */
+    const std::vector<unsigned int> &
+    get_computed_cells() const
+    {
+      return computed_cells;
+    }
+
   private:
     std::vector<CellData>                data;
     std::vector<SymmetricTensor<4, dim>> elasticity;
+    std::vector<unsigned int>            computed_cells;
     unsigned int                         n_q_points = 0;
   };
 } // namespace ndda

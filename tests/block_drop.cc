@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// A 0.5 m x 0.5 m block dropped 0.5 m onto a fixed block (contact issue,
+// second "must show" item), frictionless, one bounce (0.7 s):
+//
+//  - the first contact closes in the step that contains the impact time
+//    sqrt(2 h / g), for both integrators;
+//  - no contact penetrates deeper than the scene's tolerance;
+//  - Newmark with a penalty that resolves the impact in time (0.01 E: the
+//    contact lasts about 20 steps): no energy gain beyond 1 % of m g h at
+//    any time, and the block rebounds to within 5 % of the drop height;
+//  - DDA: no energy gain either; its restitution is reported;
+//  - Newmark with a stiffer penalty (0.1 E, about 6 steps of contact) is
+//    reported: it misses the energy target (printed, not asserted).
+//
+// Five bounces are not checked: see doc/contact.md ("Known limits") for
+// what happens after the second impact.
+
+#include <cmath>
+
+#include "tests.h"
+
+using namespace ndda_tests;
+
+namespace
+{
+  const std::string scene = R"(
+subsection Control
+  set Analysis type   = dynamic
+  set Time integrator = {integrator}
+  set Time step       = 1e-4
+  set End time        = 0.7
+  set Maximum displacement ratio = 0.01
+  set Matrix update tolerance = 0.05
+end
+subsection Contact
+  set Penalty factor = {penalty}
+  set Maximum penetration ratio = {tolerance}
+end
+subsection Materials
+  set Names = rock
+  subsection rock
+    set Density = 2600
+    set Young's modulus = 50e9
+    set Poisson's ratio = 0.25
+  end
+  subsection Joint
+    set Friction angle = 0
+  end
+end
+subsection Geometry
+  set Blocks = base, block
+  subsection base
+    set Outer boundary = -1, -0.5; 1, -0.5; 1, 0; -1, 0
+    set Material = rock
+    set Mesh size = 0.25
+  end
+  subsection block
+    set Outer boundary = -0.25, 0.5; 0.25, 0.5; 0.25, 1; -0.25, 1
+    set Material = rock
+    set Mesh size = 0.5
+  end
+end
+subsection Loads
+  set Gravity = 0; -9.81
+end
+subsection Boundary conditions
+  set Names = ground
+  subsection ground
+    set Type = fixed
+    set Segments = -1, -0.5, 1, -0.5
+  end
+end
+subsection Output
+  set Measure points = 0, 0.75
+end
+)";
+
+  struct Result
+  {
+    double impact_step_end = -1; // time at the end of the first contact step
+    double dt              = 0;
+    double rebound         = 0; // largest height of the centre after impact
+    double max_gain        = 0; // largest energy gain (J)
+    double max_penetration = 0;
+    double tolerance       = 0;
+    double dissipation     = 0;
+  };
+
+  Result
+  run(const std::string &integrator,
+      const double       penalty,
+      const double       tolerance_ratio)
+  {
+    const auto parameters = read_parameters(
+      substitute(scene,
+                 {{"integrator", integrator},
+                  {"penalty", std::to_string(penalty)},
+                  {"tolerance", std::to_string(tolerance_ratio)}}),
+      "block_drop");
+    ndda::Simulator<2> simulator(parameters);
+    simulator.setup();
+    Result result;
+    result.tolerance = tolerance_ratio * 0.5 * 1.5; // half the scene height
+    while (simulator.get_time() < 0.7 - 1e-12)
+      {
+        simulator.do_time_step();
+        const auto &c = simulator.get_contacts().get_statistics();
+        if (result.impact_step_end < 0 && c.n_closed > 0)
+          {
+            result.impact_step_end = simulator.get_time();
+            result.dt = simulator.get_parameters().control.time_step;
+          }
+        result.max_penetration =
+          std::max(result.max_penetration, c.max_penetration);
+        result.max_gain = std::max(result.max_gain, simulator.energy_error());
+        result.dissipation = c.dissipation;
+        const double height =
+          simulator.get_measure_histories()[0].back().displacement[1] + 0.5;
+        if (result.impact_step_end > 0 &&
+            simulator.get_time() > result.impact_step_end + 0.01)
+          result.rebound = std::max(result.rebound, height);
+      }
+    return result;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::cout << std::setprecision(4);
+
+  const double h = 0.5, g = 9.81, mass = 2600 * 0.25;
+  const double impact = std::sqrt(2 * h / g);
+  const double mgh    = mass * g * h;
+  std::cout << "impact time sqrt(2 h / g) = " << impact << " s, m g h = " << mgh
+            << " J" << std::endl;
+
+  const auto check_common = [&](const std::string &what, const Result &r) {
+    std::cout << "  " << what << ": first contact in the step ending at "
+              << r.impact_step_end << " s, rebound " << r.rebound << " m ("
+              << 100 * r.rebound / h << " % of the drop), largest energy gain "
+              << r.max_gain << " J (" << 100 * r.max_gain / mgh
+              << " % of m g h), contacts dissipated " << r.dissipation
+              << " J, max penetration " << r.max_penetration << " m (tolerance "
+              << r.tolerance << " m)" << std::endl;
+    check(r.impact_step_end - r.dt < impact + 1e-12 &&
+            impact <= r.impact_step_end + 1e-12,
+          what + ": impact not in the first contact step");
+    check(r.max_penetration <= r.tolerance, what + ": penetration");
+  };
+
+  const Result newmark = run("Newmark", 0.01, 5e-3);
+  check_common("Newmark, penalty 0.01 E", newmark);
+  check(newmark.max_gain <= 0.01 * mgh, "Newmark: energy gain beyond 1 %");
+  check(std::abs(newmark.rebound / h - 1) < 0.05,
+        "Newmark rebound not within 5 % of the drop height");
+
+  const Result dda = run("DDA", 0.01, 5e-3);
+  check_common("DDA, penalty 0.01 E", dda);
+  check(dda.max_gain <= 0.01 * mgh, "DDA: energy gain beyond 1 %");
+  std::cout << "  DDA restitution sqrt(h1 / h) = " << std::sqrt(dda.rebound / h)
+            << std::endl;
+
+  // Not asserted: with the impact resolved by only about 6 steps the
+  // energy target is missed (doc/contact.md, "Known limits").
+  const Result stiff = run("Newmark", 0.1, 1e-3);
+  check_common("Newmark, penalty 0.1 E", stiff);
+  if (stiff.max_gain > 0.01 * mgh)
+    std::cout << "  target NOT met for penalty 0.1 E: energy gain "
+              << 100 * stiff.max_gain / mgh << " % > 1 %" << std::endl;
+  std::cout << "OK" << std::endl;
+}
