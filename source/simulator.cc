@@ -1330,7 +1330,6 @@ namespace ndda
       {
         contacts.set_normal_stiffness(2. *
                                       contacts.get_settings().normal_stiffness);
-        ++n_penalty_raises;
         return StepResult::penalty_raised;
       }
 

@@ -416,7 +416,6 @@ namespace ndda
     contact::ContactHandler contacts;
     double                  contact_threshold     = 0;
     double                  penetration_tolerance = 0;
-    unsigned int            n_penalty_raises      = 0;
 
     Vector<double> displacement;
     Vector<double> velocity;

@@ -255,7 +255,6 @@ namespace ndda
     ContactHandler::begin_step(const std::vector<Point<2>> &vertices,
                                const double                 threshold)
     {
-      start_vertices          = vertices;
       statistics.n_iterations = 0;
       contacts.clear();
       couplings.clear();
@@ -1022,27 +1021,6 @@ namespace ndda
       statistics.contact_work += applied * d;
       statistics.dissipation =
         -statistics.contact_work - statistics.spring_energy;
-    }
-
-
-
-    std::vector<std::tuple<unsigned int, unsigned int, unsigned int, State>>
-    ContactHandler::get_states() const
-    {
-      std::vector<std::tuple<unsigned int, unsigned int, unsigned int, State>>
-        states;
-      for (const Contact &c : contacts)
-        if (c.chosen != invalid)
-          {
-            const Option &o = c.options[c.chosen];
-            states.emplace_back(o.vertex,
-                                edges[o.edge].v0,
-                                edges[o.edge].v1,
-                                c.state);
-          }
-        else
-          states.emplace_back(c.vertex_a, c.vertex_b, invalid, c.state);
-      return states;
     }
   } // namespace contact
 } // namespace ndda

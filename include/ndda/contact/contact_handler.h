@@ -247,11 +247,6 @@ namespace ndda
         return statistics;
       }
 
-      /** One contact's state, for tests: (vertex, reference edge's v0, v1,
-       * state); the edge is (invalid, invalid) for an unresolved
-       * vertex-vertex pair, whose other vertex is then given as v0. */
-      std::vector<std::tuple<unsigned int, unsigned int, unsigned int, State>>
-      get_states() const;
 
     private:
       /**
@@ -389,7 +384,6 @@ namespace ndda
       std::vector<double>                                edge_friction;
       std::vector<double>                                vertex_friction;
       std::vector<std::vector<unsigned int>>             edges_at_vertex;
-      std::vector<Point<2>>                              start_vertices;
       std::vector<Contact>                               contacts;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
