@@ -1082,10 +1082,9 @@ namespace ndda
   void
   Simulator<dim>::factorize(const bool with_contacts)
   {
-    // condensed_matrix holds the system matrix, with the contact springs
-    // already added if with_contacts.
+    // condensed_matrix holds the condensed system matrix, with the contact
+    // springs already added if with_contacts.
     TimerOutput::Scope scope(timer, "factorize");
-    constraints.condense(condensed_matrix);
     linear_solver->factorize(condensed_matrix);
     base_factorized = !with_contacts;
   }
@@ -1294,8 +1293,33 @@ namespace ndda
             constraints.condense(b);
           }
         if (springs || !base_factorized)
-          factorize(springs);
-        last_solver_iterations = linear_solver->solve(d, b);
+          {
+            constraints.condense(condensed_matrix);
+            // A changed system: try the last factorization as GMRES
+            // preconditioner first (only contact springs or the contact
+            // geometry differ), factorize if it does not serve.
+            last_solver_iterations =
+              with_contact && !refactorize_next ?
+                linear_solver->solve_with_earlier_factorization(
+                  condensed_matrix,
+                  d,
+                  b,
+                  parameters.contact.reuse_iterations,
+                  1e-12) :
+                0;
+            refactorize_next = false;
+            if (last_solver_iterations == 0)
+              {
+                factorize(springs);
+                last_solver_iterations = linear_solver->solve(d, b);
+              }
+            else if (2 * last_solver_iterations >
+                     parameters.contact.reuse_iterations)
+              // Converging slowly: the factorization has aged.
+              refactorize_next = true;
+          }
+        else
+          last_solver_iterations = linear_solver->solve(d, b);
         if (exact)
           {
             constraints.distribute(d);

@@ -412,6 +412,9 @@ namespace ndda
     bool                                               matrices_changed = true;
     /// The factorization is that of the system matrix without contacts.
     bool base_factorized = false;
+    /// The last GMRES solve with an earlier factorization converged slowly:
+    /// factorize the next changed system.
+    bool refactorize_next = false;
 
     contact::ContactHandler contacts;
     double                  contact_threshold     = 0;

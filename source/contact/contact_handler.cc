@@ -83,6 +83,7 @@ namespace ndda
       contacts.clear();
       couplings.clear();
       memory.clear();
+      open_last_step.clear();
       statistics = ContactStatistics();
     }
 
@@ -233,12 +234,19 @@ namespace ndda
           c.options[c.chosen].gap += c.offset;
           c.offset = 0;
         }
-      // An open contact that already touches (no gap) starts closed: left
+      // A new contact that already touches (no gap) starts closed: left
       // open, its vertex would first move freely through the whole step
       // and then hit the spring, an impact that an undamped integrator
-      // keeps ringing. (A pair whose edge is not chosen yet stays open.)
+      // keeps ringing. One that was open at the last step's end stays
+      // open (faces that touch without force, such as the head joints of
+      // a wall, would otherwise be closed and pulled open again in every
+      // step, one open-close iteration each). A pair whose edge is not
+      // chosen yet stays open.
       if (c.state == State::open && c.chosen != invalid &&
-          c.options[c.chosen].gap <= settings.state_tolerance)
+          c.options[c.chosen].gap <= settings.state_tolerance &&
+          (c.vertex_a != invalid ||
+           open_last_step.count(
+             key(c.options[c.chosen].vertex, c.options[c.chosen].edge)) == 0))
         {
           c.state  = State::locked;
           c.anchor = c.options[c.chosen].ratio;
@@ -909,7 +917,22 @@ namespace ndda
           if (state != c.state || sign != c.sign)
             changed = true;
           if (state == State::locked && c.state != State::locked)
-            c.anchor = c.options[c.chosen].ratio;
+            {
+              c.anchor = c.options[c.chosen].ratio;
+              // A sliding contact whose motion reverses unloads elastically
+              // from the Coulomb limit: its shear spring starts the step
+              // stretched to the friction force it carried. (Starting it
+              // unstretched would drop the friction force to zero at every
+              // reversal, and a resting block that vibrates slightly would
+              // switch between sliding and locked in every step.)
+              if (c.state == State::sliding && c.sign != 0)
+                {
+                  const double g = c.options[c.chosen].normal_gap(d);
+                  c.anchor -=
+                    c.sign * c.friction * std::max(-g, 0.) /
+                    (settings.shear_ratio * c.options[c.chosen].length);
+                }
+            }
           c.state = state;
           c.sign  = sign;
           if (state == State::open && c.vertex_a != invalid)
@@ -945,6 +968,7 @@ namespace ndda
       const double kn = settings.normal_stiffness;
       const double ks = settings.shear_ratio * kn;
       memory.clear();
+      open_last_step.clear();
       statistics.n_closed         = 0;
       statistics.n_sliding        = 0;
       statistics.n_vertex_springs = 0;
@@ -980,6 +1004,9 @@ namespace ndda
                 }
               continue;
             }
+          if (c.state == State::open && c.vertex_a == invalid)
+            open_last_step.insert(
+              key(c.options[c.chosen].vertex, c.options[c.chosen].edge));
           if (c.state == State::open || c.chosen == invalid)
             continue;
           ++statistics.n_closed;

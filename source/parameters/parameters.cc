@@ -428,6 +428,15 @@ namespace ndda
                         "Largest number of solves in one step's open-close "
                         "iteration; a step whose contact states still "
                         "change is cut in half and retried.");
+      prm.declare_entry(
+        "Reused factorization iterations",
+        "10",
+        Patterns::Integer(0, 100),
+        "With UMFPACK: a system whose contact springs changed is first "
+        "solved by GMRES preconditioned with the last factorization, and "
+        "factorized anew only if GMRES needs more than this many "
+        "iterations (the result is the same to a relative residual of "
+        "1e-12). 0: factorize every changed system.");
       prm.declare_entry("Vertex-vertex method",
                         "revised",
                         Patterns::Selection("revised|shortest path"),
@@ -463,10 +472,11 @@ namespace ndda
                     "largest Young's modulus, e.g. 100."));
       shear_stiffness_ratio     = prm.get_double("Shear stiffness ratio");
       max_open_close_iterations = prm.get_integer("Open-close iterations");
-      vertex_vertex_method      = prm.get("Vertex-vertex method") == "revised" ?
-                                    VertexVertexMethod::revised :
-                                    VertexVertexMethod::shortest_path;
-      max_penetration_ratio     = prm.get_double("Maximum penetration ratio");
+      reuse_iterations     = prm.get_integer("Reused factorization iterations");
+      vertex_vertex_method = prm.get("Vertex-vertex method") == "revised" ?
+                               VertexVertexMethod::revised :
+                               VertexVertexMethod::shortest_path;
+      max_penetration_ratio = prm.get_double("Maximum penetration ratio");
       AssertThrow(max_penetration_ratio > 0. ||
                     penalty_method == PenaltyMethod::fixed,
                   ExcMessage("Contact/Maximum penetration ratio: must be "

@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -108,6 +109,21 @@ namespace ndda
                                control,
                                info),
               "solve");
+      }
+
+      /** The size of the factorized matrix, 0 if there is none. */
+      SuiteSparse_long
+      size() const
+      {
+        return numeric == nullptr ? 0 : ap.size() - 1;
+      }
+
+      /** As preconditioner: dst = (factorized matrix)^-1 src. */
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        // UMFPACK's solve does not change its factorization.
+        const_cast<Umfpack *>(this)->solve(dst, src);
       }
 
     private:
@@ -244,6 +260,40 @@ namespace ndda
                       "Solver message: " +
                       message.str()));
       }
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve_with_earlier_factorization(
+    const SparseMatrix<double> &matrix,
+    Vector<double>             &x,
+    const Vector<double>       &b,
+    const unsigned int          max_iterations,
+    const double                tolerance)
+  {
+    const auto &umfpack = implementation->umfpack;
+    if (type != parameters::LinearSolver::umfpack || max_iterations == 0 ||
+        umfpack.size() != static_cast<SuiteSparse_long>(matrix.m()))
+      return 0;
+    x.reinit(b.size());
+    const double norm = b.l2_norm();
+    if (norm == 0.)
+      return 1;
+    // Right preconditioning: GMRES then watches the true residual.
+    SolverControl control(max_iterations, tolerance * norm, false, false);
+    SolverGMRES<Vector<double>> gmres(
+      control,
+      SolverGMRES<Vector<double>>::AdditionalData(max_iterations + 2, true));
+    try
+      {
+        gmres.solve(matrix, x, b, umfpack);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        return 0;
+      }
+    return std::max(1u, control.last_step());
   }
 
 

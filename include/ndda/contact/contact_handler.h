@@ -16,6 +16,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -388,6 +389,10 @@ namespace ndda
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
                         memory;
+      /// Vertex-edge contacts that ended the last step open: one that
+      /// touches at the start of the next step starts it open too.
+      std::set<std::tuple<unsigned int, unsigned int, unsigned int>>
+        open_last_step;
       ContactStatistics statistics;
       /// Forces of all springs at the end of the last accepted step.
       dealii::Vector<double> end_force;

@@ -52,6 +52,28 @@ namespace ndda
     unsigned int
     solve(Vector<double> &x, const Vector<double> &b);
 
+    /**
+     * Solve matrix * x = b with GMRES, preconditioned by the factorization
+     * of an earlier matrix of the same size (UMFPACK only). Meant for the
+     * open-close iteration, where the matrix of one iteration differs from
+     * the factorized one by a few contact springs, or by small changes of
+     * the contact geometry from step to step: a preconditioner that is
+     * exact up to a low-rank or small perturbation converges in a few
+     * iterations, each one triangular solve and one product with the
+     * matrix, instead of a new factorization.
+     *
+     * Returns the number of GMRES iterations, or 0 if there is no such
+     * factorization or GMRES did not reduce the residual to @p tolerance
+     * times |b| within @p max_iterations; x is then undefined, and the
+     * caller factorizes the matrix instead.
+     */
+    unsigned int
+    solve_with_earlier_factorization(const SparseMatrix<double> &matrix,
+                                     Vector<double>             &x,
+                                     const Vector<double>       &b,
+                                     const unsigned int          max_iterations,
+                                     const double                tolerance);
+
     /** Number of factorizations so far. */
     unsigned int
     n_factorizations() const
