@@ -24,8 +24,6 @@
 #include <deal.II/fe/component_mask.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "tests.h"
 
@@ -36,11 +34,7 @@ namespace
   void
   run(const std::string &name)
   {
-    std::ifstream file(std::string(NDDA_TEST_DIR) + "/../prm/" + name + ".prm");
-    std::stringstream text;
-    text << file.rdbuf();
-    check(file.good() && !text.str().empty(), "cannot read prm/" + name);
-    const auto parameters = read_parameters(text.str(), name);
+    const auto parameters = read_parameters(read_example(name), name);
 
     ndda::Simulator<2> simulator(parameters);
     simulator.setup();

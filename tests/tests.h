@@ -13,10 +13,12 @@
 #include <ndda/simulator.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 
 namespace ndda_tests
@@ -55,6 +57,19 @@ namespace ndda_tests
         std::exit(1);
       }
   }
+
+#ifdef NDDA_TEST_DIR
+  /** The text of the example scene prm/NAME.prm. */
+  inline std::string
+  read_example(const std::string &name)
+  {
+    std::ifstream file(std::string(NDDA_TEST_DIR) + "/../prm/" + name + ".prm");
+    std::stringstream text;
+    text << file.rdbuf();
+    check(!text.str().empty(), "cannot read prm/" + name + ".prm");
+    return text.str();
+  }
+#endif
 } // namespace ndda_tests
 
 #endif

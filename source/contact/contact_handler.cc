@@ -280,13 +280,21 @@ namespace ndda
           dofs.cell_dofs->data() + std::size_t(edges[e].cell) * n_cell_dofs;
         return std::find(cd, cd + n_cell_dofs, dof) != cd + n_cell_dofs;
       };
+      // Is there a state to carry over (see transfer()): the pair's own, or
+      // that of the vertex on a neighbouring edge across a straight vertex?
       const auto remembered = [&](const unsigned int v, const unsigned int e) {
         if (memory.count(key(v, e)) > 0)
           return true;
+        const Tensor<1, 2> te = vertices[edges[e].v1] - vertices[edges[e].v0];
         for (const unsigned int w : {edges[e].v0, edges[e].v1})
           for (const unsigned int other : edges_at_vertex[w])
-            if (memory.count(key(v, other)) > 0)
-              return true;
+            if (other != e && memory.count(key(v, other)) > 0)
+              {
+                const Tensor<1, 2> t =
+                  vertices[edges[other].v1] - vertices[edges[other].v0];
+                if (t * te >= straight_cosine * t.norm() * te.norm())
+                  return true;
+              }
         return false;
       };
       const auto c_friction = [&](const unsigned int a, const unsigned int b) {
