@@ -1459,14 +1459,20 @@ namespace ndda
   {
     // The small-rotation update moves points along straight lines: a
     // spinning block would not turn its velocity. As DDA does with its
-    // block rotation, turn each node's velocity (and inertia force) by the
-    // local rotation of the increment, and each cell's stress by the
-    // cell's rotation (Jaumann-like); the internal force follows from the
-    // turned stresses. See doc/theory.md.
-    const unsigned int  n_dofs = fe->n_dofs_per_cell();
-    const unsigned int  n_q    = element_cache.n_quadrature_points();
-    std::vector<double> node_spin(node_dofs.size()),
-      node_weight(node_dofs.size());
+    // block rotation, turn the velocity (and inertia force) of each block
+    // relative to its centre of mass by the block's rotation in the
+    // increment, and each cell's stress by the cell's rotation
+    // (Jaumann-like); the internal force follows from the turned stresses.
+    // Only the part relative to the centre of mass turns: a block that
+    // falls while it vibrates (its spin oscillating) keeps its momentum,
+    // where turning whole nodal velocities by nodal spins made it drift
+    // sideways by metres. See doc/theory.md.
+    const unsigned int        n_dofs   = fe->n_dofs_per_cell();
+    const unsigned int        n_q      = element_cache.n_quadrature_points();
+    const unsigned int        n_blocks = mesh.n_blocks();
+    std::vector<double>       block_spin(n_blocks), block_area(n_blocks);
+    std::vector<unsigned int> node_block(node_dofs.size(),
+                                         numbers::invalid_unsigned_int);
     for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
       {
         const auto &data  = element_cache[c];
@@ -1478,6 +1484,9 @@ namespace ndda
               omega += d[dofs[i]] * data.spin[q * n_dofs + i] * data.weight[q];
             area += data.weight[q];
           }
+        const unsigned int b = mesh.block_of_cell(c);
+        block_spin[b] += omega;
+        block_area[b] += area;
         omega /= area;
         if (omega != 0.)
           {
@@ -1493,21 +1502,61 @@ namespace ndda
               }
           }
         for (unsigned int i = 0; i < n_dofs; ++i)
-          if (local_component[i] == 0)
-            {
-              node_spin[dof_to_node[dofs[i]]] += omega * area;
-              node_weight[dof_to_node[dofs[i]]] += area;
-            }
+          node_block[dof_to_node[dofs[i]]] = b;
       }
+
+    // Centre-of-mass velocity and acceleration of each block, with the
+    // row sums of the mass matrix as nodal masses (1^T M v is the momentum
+    // for the consistent mass too).
+    std::vector<double>         block_mass(n_blocks);
+    std::vector<Tensor<1, dim>> block_velocity(n_blocks), block_force(n_blocks);
+    std::vector<double>         node_mass(node_dofs.size());
     for (unsigned int n = 0; n < node_dofs.size(); ++n)
       {
-        const double omega = node_spin[n] / node_weight[n];
-        if (omega == 0.)
+        const unsigned int b = node_block[n];
+        if (b == numbers::invalid_unsigned_int)
           continue;
-        const auto [cs, sn] = cos_sin(omega);
+        double m = 0;
+        for (auto entry = mass_matrix.begin(node_dofs[n][0]);
+             entry != mass_matrix.end(node_dofs[n][0]);
+             ++entry)
+          m += entry->value();
+        node_mass[n] = m;
+        block_mass[b] += m;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            block_velocity[b][k] += m * velocity[node_dofs[n][k]];
+            block_force[b][k] += inertia_force[node_dofs[n][k]];
+          }
+      }
+    for (unsigned int b = 0; b < n_blocks; ++b)
+      if (block_mass[b] > 0.)
+        {
+          block_velocity[b] /= block_mass[b];
+          block_force[b] /= block_mass[b]; // per unit mass
+          block_spin[b] /= block_area[b];
+        }
+
+    for (unsigned int n = 0; n < node_dofs.size(); ++n)
+      {
+        const unsigned int b = node_block[n];
+        if (b == numbers::invalid_unsigned_int || block_spin[b] == 0. ||
+            block_mass[b] <= 0.)
+          continue;
+        const auto [cs, sn] = cos_sin(block_spin[b]);
         const auto [i, j]   = node_dofs[n];
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            velocity[node_dofs[n][k]] -= block_velocity[b][k];
+            inertia_force[node_dofs[n][k]] -= node_mass[n] * block_force[b][k];
+          }
         rotate_pair(velocity, i, j, cs, sn);
         rotate_pair(inertia_force, i, j, cs, sn);
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            velocity[node_dofs[n][k]] += block_velocity[b][k];
+            inertia_force[node_dofs[n][k]] += node_mass[n] * block_force[b][k];
+          }
       }
   }
 
