@@ -588,13 +588,16 @@ namespace ndda
       const double       kn = scale * settings.normal_stiffness;
       const double       ks = settings.shear_ratio * kn;
       const unsigned int n  = o.dofs.size();
+      // The springs' stiffness as one dense n x n block, added to the
+      // sparse matrix row by row (one search per row, not per entry).
+      std::vector<double> k(matrix != nullptr ? n * n : 0, 0.);
       // Normal spring: energy kn/2 (g0 + e_n.d)^2.
       for (unsigned int i = 0; i < n; ++i)
         {
           rhs[o.dofs[i]] -= kn * o.gap * o.wn[i];
           if (matrix != nullptr)
             for (unsigned int j = 0; j < n; ++j)
-              matrix->add(o.dofs[i], o.dofs[j], kn * o.wn[i] * o.wn[j]);
+              k[i * n + j] += kn * o.wn[i] * o.wn[j];
         }
       if (state == State::locked)
         {
@@ -605,7 +608,7 @@ namespace ndda
               rhs[o.dofs[i]] -= ks * s0 * o.wt[i];
               if (matrix != nullptr)
                 for (unsigned int j = 0; j < n; ++j)
-                  matrix->add(o.dofs[i], o.dofs[j], ks * o.wt[i] * o.wt[j]);
+                  k[i * n + j] += ks * o.wt[i] * o.wt[j];
             }
         }
       else if (sign != 0 && friction > 0.)
@@ -620,9 +623,12 @@ namespace ndda
               rhs[o.dofs[i]] += f * o.gap * o.wt[i];
               if (matrix != nullptr)
                 for (unsigned int j = 0; j < n; ++j)
-                  matrix->add(o.dofs[i], o.dofs[j], -f * o.wt[i] * o.wn[j]);
+                  k[i * n + j] -= f * o.wt[i] * o.wn[j];
             }
         }
+      if (matrix != nullptr)
+        for (unsigned int i = 0; i < n; ++i)
+          matrix->add(o.dofs[i], n, o.dofs.data(), &k[i * n], false, false);
     }
 
 
