@@ -656,12 +656,28 @@ namespace ndda
   Simulator<dim>::update_sparsity_for_contacts()
   {
     // The pattern holds the couplings of every candidate contact of the
-    // step; it (and every matrix on it) is rebuilt only when that set
-    // changes, so a scene at rest keeps its pattern and UMFPACK its
-    // symbolic factorization.
+    // step and those of earlier steps: it (and every matrix on it) is
+    // rebuilt only when a coupling is missing, with the union of both
+    // sets, so that candidates which come and go near the detection
+    // distance do not change it and the direct solver keeps its symbolic
+    // analysis (UMFPACK) or its pivot order (KLU). When the pattern holds
+    // more than twice the couplings in use, it is rebuilt with the
+    // present ones only.
     const auto &couplings = contacts.get_couplings();
-    if (couplings == pattern_couplings)
+    if (std::includes(pattern_couplings.begin(),
+                      pattern_couplings.end(),
+                      couplings.begin(),
+                      couplings.end()) &&
+        pattern_couplings.size() <= 2 * couplings.size() + 16)
       return;
+    std::vector<std::pair<unsigned int, unsigned int>> merged;
+    std::set_union(pattern_couplings.begin(),
+                   pattern_couplings.end(),
+                   couplings.begin(),
+                   couplings.end(),
+                   std::back_inserter(merged));
+    if (merged.size() > 2 * couplings.size() + 16)
+      merged = couplings;
     TimerOutput::Scope                   scope(timer, "sparsity");
     DynamicSparsityPattern               dsp(base_sparsity.n_rows());
     std::vector<types::global_dof_index> row;
@@ -674,7 +690,7 @@ namespace ndda
         dsp.add_entries(i, row.begin(), row.end());
       }
     const unsigned int n_cell_dofs = fe->n_dofs_per_cell();
-    for (const auto &[vertex, cell] : couplings)
+    for (const auto &[vertex, cell] : merged)
       for (const auto i : vertex_dofs[vertex])
         for (unsigned int k = 0; k < n_cell_dofs; ++k)
           {
@@ -683,7 +699,7 @@ namespace ndda
             dsp.add(j, i);
           }
     reinit_matrices(dsp);
-    pattern_couplings = couplings;
+    pattern_couplings.swap(merged);
     assemble_global_matrices();
   }
 

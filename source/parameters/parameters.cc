@@ -310,8 +310,12 @@ namespace ndda
       prm.declare_entry("Linear solver",
                         "UMFPACK",
                         Patterns::Selection("UMFPACK|KLU|CG-AMG"),
-                        "UMFPACK: sparse direct (serial); KLU: Trilinos "
-                        "direct; CG-AMG: Trilinos CG with ML AMG.");
+                        "UMFPACK: sparse direct, multifrontal (serial; best "
+                        "for large blocks); KLU: sparse direct, SuiteSparse's "
+                        "KLU (little overhead per factorization, keeps the "
+                        "pivot order between contact iterations; best for "
+                        "many small blocks); CG-AMG: Trilinos CG with ML "
+                        "AMG.");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0.),
@@ -432,7 +436,7 @@ namespace ndda
         "Reused factorization iterations",
         "10",
         Patterns::Integer(0, 100),
-        "With UMFPACK: a system whose contact springs changed is first "
+        "With UMFPACK or KLU: a system whose contact springs changed is first "
         "solved by GMRES preconditioned with the last factorization, and "
         "factorized anew only if GMRES needs more than this many "
         "iterations (the result is the same to a relative residual of "
