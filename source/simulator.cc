@@ -1724,6 +1724,18 @@ namespace ndda
             " step cuts. Increase 'Maximum step cuts' or the limit named, "
             "or reduce the time step."));
         dt *= 0.5;
+        // Steps that each need a cut shrink the step without bound when
+        // the motion diverges: stop rather than crawl.
+        AssertThrow(dt >= 1e-6 * parameters.control.time_step,
+                    ExcMessage(
+                      "Step " + std::to_string(step_number + 1) +
+                      " at t = " + Utilities::to_string(time) +
+                      ": the step size fell below 1e-6 of Control/Time step "
+                      "after cuts in step after step; the motion is "
+                      "diverging (largest increment " +
+                      Utilities::to_string(max_increment) +
+                      " m). Look at the last output and the statistics "
+                      "file; see doc/contact.md, 'Known limits'."));
       }
     step_cuts += cuts;
     ++step_number;
