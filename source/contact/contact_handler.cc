@@ -374,7 +374,7 @@ namespace ndda
               vertex_edge.emplace_back(list[a]->vertex, list[a]->edge);
           i = j;
         }
-      // vertex_edge is sorted by vertex (the candidates are).
+      // vertex_edge is sorted by vertex, then edge (the candidates are).
       const auto has_vertex_edge_at = [&](const unsigned int v,
                                           const unsigned int corner) {
         auto range = std::equal_range(vertex_edge.begin(),
@@ -443,6 +443,12 @@ namespace ndda
               for (const auto &[v, e] :
                    {std::make_pair(a, face_e), std::make_pair(b, face_f)})
                 {
+                  // Already a vertex-edge contact (the pair was found from
+                  // the other vertex's side): not twice.
+                  if (std::binary_search(vertex_edge.begin(),
+                                         vertex_edge.end(),
+                                         std::make_pair(v, e)))
+                    continue;
                   Contact face;
                   face.options.push_back(make_option(vertices, v, e));
                   const Option &o = face.options[0];
