@@ -388,11 +388,11 @@ namespace ndda
       std::vector<Contact>                               contacts;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
-                        memory;
+        memory;
       /// Vertex-edge contacts that ended the last step open: one that
       /// touches at the start of the next step starts it open too.
       std::set<std::tuple<unsigned int, unsigned int, unsigned int>>
-        open_last_step;
+                        open_last_step;
       ContactStatistics statistics;
       /// Forces of all springs at the end of the last accepted step.
       dealii::Vector<double> end_force;
