@@ -148,6 +148,31 @@ namespace ndda
 
 
 
+    unsigned int
+    ContactHandler::straight_neighbour_in_memory(
+      const std::vector<Point<2>> &vertices,
+      const unsigned int           vertex,
+      const unsigned int           edge) const
+    {
+      // Only across a (nearly) straight vertex: round a corner the contact
+      // direction changes, and so does the state.
+      const Tensor<1, 2> t =
+        vertices[edges[edge].v1] - vertices[edges[edge].v0];
+      unsigned int found = invalid;
+      for (const unsigned int w : {edges[edge].v0, edges[edge].v1})
+        for (const unsigned int other : edges_at_vertex[w])
+          if (other != edge && memory.count(key(vertex, other)) > 0)
+            {
+              const Tensor<1, 2> u =
+                vertices[edges[other].v1] - vertices[edges[other].v0];
+              if (u * t >= straight_cosine * u.norm() * t.norm())
+                found = other; // the last one found, should there be two
+            }
+      return found;
+    }
+
+
+
     void
     ContactHandler::transfer(Contact                     &c,
                              const std::vector<Point<2>> &vertices) const
@@ -169,30 +194,21 @@ namespace ndda
               c.sign   = found->second.sign;
               c.offset = found->second.offset;
             }
-          else
-            for (const unsigned int v : {edges[o.edge].v0, edges[o.edge].v1})
-              for (const unsigned int other : edges_at_vertex[v])
-                {
-                  const auto near = memory.find(key(o.vertex, other));
-                  if (other == o.edge || near == memory.end())
-                    continue;
-                  // Only across a (nearly) straight vertex: round a corner
-                  // the contact direction changes, and so does the state.
-                  const Tensor<1, 2> t =
-                    vertices[edges[other].v1] - vertices[edges[other].v0];
-                  if (t * o.tangent < straight_cosine * t.norm())
-                    continue;
-                  c.state  = near->second.state;
-                  c.sign   = near->second.sign;
-                  c.offset = near->second.offset;
-                  // The old anchor point, projected on this edge.
-                  const Point<2> &a0 = vertices[edges[other].v0];
-                  const Point<2> &b0 = vertices[edges[other].v1];
-                  const Point<2>  x  = a0 + near->second.anchor * (b0 - a0);
-                  const Point<2> &a  = vertices[edges[o.edge].v0];
-                  c.anchor =
-                    ((x - a) * o.tangent) / o.length; // ratio on this edge
-                }
+          else if (const unsigned int other =
+                     straight_neighbour_in_memory(vertices, o.vertex, o.edge);
+                   other != invalid)
+            {
+              const Memory &near = memory.at(key(o.vertex, other));
+              c.state            = near.state;
+              c.sign             = near.sign;
+              c.offset           = near.offset;
+              // The old anchor point, projected on this edge.
+              const Point<2> &a0 = vertices[edges[other].v0];
+              const Point<2> &b0 = vertices[edges[other].v1];
+              const Point<2>  x  = a0 + near.anchor * (b0 - a0);
+              const Point<2> &a  = vertices[edges[o.edge].v0];
+              c.anchor = ((x - a) * o.tangent) / o.length; // ratio on this edge
+            }
         }
       else
         {
@@ -283,19 +299,8 @@ namespace ndda
       // Is there a state to carry over (see transfer()): the pair's own, or
       // that of the vertex on a neighbouring edge across a straight vertex?
       const auto remembered = [&](const unsigned int v, const unsigned int e) {
-        if (memory.count(key(v, e)) > 0)
-          return true;
-        const Tensor<1, 2> te = vertices[edges[e].v1] - vertices[edges[e].v0];
-        for (const unsigned int w : {edges[e].v0, edges[e].v1})
-          for (const unsigned int other : edges_at_vertex[w])
-            if (other != e && memory.count(key(v, other)) > 0)
-              {
-                const Tensor<1, 2> t =
-                  vertices[edges[other].v1] - vertices[edges[other].v0];
-                if (t * te >= straight_cosine * t.norm() * te.norm())
-                  return true;
-              }
-        return false;
+        return memory.count(key(v, e)) > 0 ||
+               straight_neighbour_in_memory(vertices, v, e) != invalid;
       };
       const auto c_friction = [&](const unsigned int a, const unsigned int b) {
         return std::min(vertex_friction[a], vertex_friction[b]);

@@ -355,6 +355,16 @@ namespace ndda
       void
       transfer(Contact &c, const std::vector<Point<2>> &vertices) const;
 
+      /**
+       * A neighbouring edge of @p edge, across a (nearly) straight vertex,
+       * on which @p vertex has a state remembered from the last step (it
+       * has slid over from there), or invalid.
+       */
+      unsigned int
+      straight_neighbour_in_memory(const std::vector<Point<2>> &vertices,
+                                   const unsigned int           vertex,
+                                   const unsigned int           edge) const;
+
       /** Update the scale of a contact that closes or opens within the
        * step; true if it changed noticeably. */
       bool
