@@ -638,10 +638,13 @@ namespace ndda
     contact::ContactSettings settings;
     settings.normal_stiffness =
       parameters.contact.penalty_factor * max_modulus * materials.thickness;
-    settings.shear_ratio           = parameters.contact.shear_stiffness_ratio;
-    settings.vertex_vertex_method  = parameters.contact.vertex_vertex_method;
-    settings.state_tolerance       = 1e-9 * penetration_tolerance;
-    settings.ignore_depth          = penetration_tolerance;
+    settings.shear_ratio          = parameters.contact.shear_stiffness_ratio;
+    settings.vertex_vertex_method = parameters.contact.vertex_vertex_method;
+    settings.state_tolerance      = 1e-9 * penetration_tolerance;
+    settings.ignore_depth         = penetration_tolerance;
+    settings.bond_tension =
+      materials.joint.tensile_strength * materials.thickness;
+    settings.bond_cohesion = materials.joint.cohesion * materials.thickness;
     settings.average_start_and_end = parameters.control.time_integrator ==
                                        parameters::TimeIntegrator::newmark &&
                                      parameters.control.analysis_type !=
@@ -1763,6 +1766,7 @@ namespace ndda
         statistics.add_value("Closed contacts", c.n_closed);
         statistics.add_value("Sliding contacts", c.n_sliding);
         statistics.add_value("Vertex springs", c.n_vertex_springs);
+        statistics.add_value("Bonded contacts", c.n_bonded);
         statistics.add_value("Max penetration (m)", c.max_penetration);
         statistics.add_value("Contact energy (J)", c.spring_energy);
         statistics.add_value("Contact dissipation (J)", c.dissipation);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
 
 #include <ndda/contact/contact_handler.h>
 
@@ -80,6 +81,7 @@ namespace ndda
             edges_at_vertex[v].push_back(e);
             vertex_friction[v] = std::min(vertex_friction[v], edge_friction[e]);
           }
+      block_edge_length.clear();
       contacts.clear();
       couplings.clear();
       memory.clear();
@@ -193,6 +195,7 @@ namespace ndda
               c.anchor = found->second.anchor;
               c.sign   = found->second.sign;
               c.offset = found->second.offset;
+              c.bonded = found->second.bonded;
             }
           else if (const unsigned int other =
                      straight_neighbour_in_memory(vertices, o.vertex, o.edge);
@@ -223,6 +226,7 @@ namespace ndda
                   c.anchor = found->second.anchor;
                   c.sign   = found->second.sign;
                   c.offset = found->second.offset;
+                  c.bonded = found->second.bonded;
                   break;
                 }
             }
@@ -242,7 +246,7 @@ namespace ndda
       // A contact closed at the last step's end that starts this step with
       // a gap (the geometry has moved on) starts open.
       if (c.state != State::open && c.chosen != invalid &&
-          c.state != State::vertex_spring &&
+          c.state != State::vertex_spring && !c.bonded &&
           c.options[c.chosen].gap > settings.state_tolerance)
         {
           c.state = State::open;
@@ -266,6 +270,13 @@ namespace ndda
         {
           c.state  = State::locked;
           c.anchor = c.options[c.chosen].ratio;
+          // Faces that touch when the run starts are joints: their
+          // cohesion and tension hold until the contact breaks.
+          c.bonded =
+            first_step &&
+            (settings.bond_tension > 0. || settings.bond_cohesion > 0.) &&
+            c.vertex_a == invalid &&
+            bonding_side(c.options[0].vertex, c.options[0].edge);
         }
       // Open and sliding contacts anchor the shear spring at the vertex's
       // present projection, should they lock within this step.
@@ -282,6 +293,25 @@ namespace ndda
       statistics.n_iterations = 0;
       contacts.clear();
       couplings.clear();
+      if (block_edge_length.empty())
+        {
+          // On the first step's geometry: which side ties bonded joints.
+          std::vector<unsigned int> n(edges.size() > 0 ? 1 : 0, 0);
+          for (const BoundaryEdge &e : edges)
+            {
+              if (e.block >= block_edge_length.size())
+                {
+                  block_edge_length.resize(e.block + 1, 0.);
+                  n.resize(e.block + 1, 0);
+                }
+              block_edge_length[e.block] +=
+                (vertices[e.v1] - vertices[e.v0]).norm();
+              ++n[e.block];
+            }
+          for (unsigned int b = 0; b < n.size(); ++b)
+            if (n[b] > 0)
+              block_edge_length[b] /= n[b];
+        }
 
       const std::vector<Candidate> candidates =
         detect(vertices, edges, threshold);
@@ -504,8 +534,39 @@ namespace ndda
         }
 
       for (Contact &c : contacts)
+        transfer(c, vertices);
+      // A bonded joint is tied from one side: contacts from the other side
+      // on an edge whose end vertex is bonded to the contact vertex's
+      // block stay open.
+      std::set<std::pair<unsigned int, unsigned int>> bonded_to;
+      for (const Contact &c : contacts)
+        if (c.bonded)
+          bonded_to.emplace(c.options[c.chosen].vertex,
+                            edges[c.options[c.chosen].edge].block);
+      for (Contact &c : contacts)
         {
-          transfer(c, vertices);
+          c.shadowed = false;
+          if (!bonded_to.empty() && !c.bonded && c.vertex_a == invalid)
+            {
+              const Option      &o = c.options[0];
+              const unsigned int block =
+                edges[edges_at_vertex[o.vertex][0]].block;
+              c.shadowed = bonded_to.count({edges[o.edge].v0, block}) > 0 ||
+                           bonded_to.count({edges[o.edge].v1, block}) > 0;
+              if (c.shadowed)
+                {
+                  c.state = State::open;
+                  c.sign  = 0;
+                }
+            }
+        }
+      for (Contact &c : contacts)
+        {
+          if (c.bonded)
+            c.bond_length = bond_length(vertices,
+                                        c.options[c.chosen].vertex,
+                                        c.options[c.chosen].edge);
+          c.start_bonded = c.bonded;
           c.start_state  = c.state;
           c.start_chosen = c.chosen;
           c.start_anchor = c.anchor;
@@ -533,6 +594,7 @@ namespace ndda
           c.chosen = c.start_chosen;
           c.anchor = c.start_anchor;
           c.sign   = c.start_sign;
+          c.bonded = c.start_bonded;
         }
     }
 
@@ -687,6 +749,103 @@ namespace ndda
       start_forces(force);
       if (end_force.size() == force.size())
         force -= end_force;
+    }
+
+
+
+    bool
+    ContactHandler::bonding_side(const unsigned int vertex,
+                                 const unsigned int edge) const
+    {
+      const unsigned int own   = edges[edges_at_vertex[vertex][0]].block;
+      const unsigned int other = edges[edge].block;
+      if (own == other)
+        return vertex < std::min(edges[edge].v0, edges[edge].v1);
+      const double a = block_edge_length[own], b = block_edge_length[other];
+      if (std::abs(a - b) > 1e-9 * std::max(a, b))
+        return a < b;
+      return own < other;
+    }
+
+
+
+    double
+    ContactHandler::bond_length(const std::vector<Point<2>> &vertices,
+                                const unsigned int           vertex,
+                                const unsigned int           edge) const
+    {
+      const double parallel = std::cos(10. * dealii::numbers::PI / 180.);
+      // The interval of boundary edge e (as distances from its first
+      // vertex) that lies on edge f, if the two run against each other.
+      const auto overlap = [&](const unsigned int e, const unsigned int f) {
+        const Point<2> &p      = vertices[edges[e].v0];
+        Tensor<1, 2>    t      = vertices[edges[e].v1] - p;
+        const double    length = t.norm();
+        t /= length;
+        const Point<2> &a  = vertices[edges[f].v0];
+        const Point<2> &b  = vertices[edges[f].v1];
+        const double    ra = (a - p) * t, rb = (b - p) * t;
+        if (ra - rb < parallel * (b - a).norm()) // not antiparallel
+          return std::make_pair(0., 0.);
+        return std::make_pair(std::max(rb, 0.), std::min(ra, length));
+      };
+      double sum = 0;
+      for (const unsigned int e : edges_at_vertex[vertex])
+        {
+          auto [lo, hi] = overlap(e, edge);
+          if (hi <= lo)
+            continue;
+          // Along the other side's boundary beyond either end of the edge,
+          // as long as it stays on e.
+          for (const unsigned int start : {edges[edge].v0, edges[edge].v1})
+            {
+              unsigned int at = start, current = edge;
+              for (unsigned int n = 0; n < 1000; ++n)
+                {
+                  unsigned int next = invalid;
+                  for (const unsigned int f : edges_at_vertex[at])
+                    if (f != current)
+                      next = f;
+                  if (next == invalid)
+                    break;
+                  const auto [l, h] = overlap(e, next);
+                  if (h <= l || l > hi + 1e-12 * h || h < lo - 1e-12 * h)
+                    break;
+                  lo      = std::min(lo, l);
+                  hi      = std::max(hi, h);
+                  current = next;
+                  at = edges[next].v0 == at ? edges[next].v1 : edges[next].v0;
+                }
+            }
+          const double length =
+            (vertices[edges[e].v1] - vertices[edges[e].v0]).norm();
+          // Does the joint reach the edge's other end?
+          const bool other_end_on_joint = edges[e].v0 == vertex ?
+                                            hi > length * (1. - 1e-9) :
+                                            lo < length * 1e-9;
+          sum += (other_end_on_joint ? 0.5 : 1.) * (hi - lo);
+        }
+      return sum;
+    }
+
+
+
+    bool
+    ContactHandler::bond_holds(const Contact                &c,
+                               const dealii::Vector<double> &d) const
+    {
+      const Option &o       = c.options[c.chosen];
+      const double  kn      = settings.normal_stiffness;
+      const double  g       = o.normal_gap(d);
+      const double  tension = kn * g; // positive: the spring pulls
+      if (g > settings.state_tolerance &&
+          tension > settings.bond_tension * c.bond_length)
+        return false;
+      const double s =
+        (o.ratio - c.anchor) * o.length + o.tangential_increment(d);
+      const double limit =
+        settings.bond_cohesion * c.bond_length - c.friction * tension;
+      return settings.shear_ratio * kn * std::abs(s) <= std::max(limit, 0.);
     }
 
 
@@ -925,8 +1084,17 @@ namespace ndda
               continue;
             }
 
+          if (c.shadowed)
+            continue;
           int   sign;
-          State state = classify(c, d, sign);
+          State state = State::locked;
+          if (c.bonded && bond_holds(c, d))
+            sign = 0;
+          else
+            {
+              c.bonded = false; // broken for good
+              state    = classify(c, d, sign);
+            }
           // Contacts that carry almost no force can make the iteration
           // cycle (closing one opens another). A contact that has changed
           // between open and closed three times in this step may still
@@ -1000,6 +1168,9 @@ namespace ndda
       statistics.n_vertex_vertex  = 0;
       statistics.spring_energy    = 0;
       statistics.max_penetration  = max_penetration(d);
+      statistics.n_bonded         = 0;
+      statistics.bonded_length    = 0;
+      first_step                  = false;
       // The forces the integrator applied over the step: at its end (DDA)
       // or the mean of start and end (Newmark).
       dealii::Vector<double> applied(d.size());
@@ -1016,7 +1187,8 @@ namespace ndda
           if (c.state == State::vertex_spring)
             {
               ++statistics.n_vertex_springs;
-              memory[{c.vertex_a, c.vertex_b, invalid}] = {c.state, 0., 0, 0.};
+              memory[{c.vertex_a, c.vertex_b, invalid}] = {
+                c.state, 0., 0, 0., false};
               Tensor<1, 2> u;
               for (unsigned int k = 0; k < 2; ++k)
                 u[k] = d[(*dofs.vertex_dofs)[c.vertex_a][k]] -
@@ -1067,7 +1239,13 @@ namespace ndda
               ++statistics.n_sliding;
               anchor = o.ratio + increment / o.length;
             }
-          memory[key(o.vertex, o.edge)] = {c.state, anchor, c.sign, c.offset};
+          if (c.bonded)
+            {
+              ++statistics.n_bonded;
+              statistics.bonded_length += c.bond_length;
+            }
+          memory[key(o.vertex, o.edge)] = {
+            c.state, anchor, c.sign, c.offset, c.bonded};
         }
       applied.add(settings.average_start_and_end ? 0.5 : 1., end_force);
       statistics.contact_work += applied * d;

@@ -616,11 +616,17 @@ namespace ndda
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::Double(0.),
-                        "Cohesion of joints and cracks (Pa).");
+                        "Cohesion of joints (Pa): contacts that touch when "
+                        "the run starts are bonded; a bond holds a shear "
+                        "force up to cohesion times contact length plus "
+                        "friction, and breaks for good when it is "
+                        "exceeded.");
       prm.declare_entry("Tensile strength",
                         "0",
                         Patterns::Double(0.),
-                        "Tensile strength of joints and cracks (Pa).");
+                        "Tensile strength of joints (Pa): a bonded contact "
+                        "holds tension up to this times its contact length "
+                        "and breaks for good beyond it.");
       prm.leave_subsection();
       prm.leave_subsection();
     }

@@ -69,6 +69,12 @@ namespace ndda
       /// The integrator averages start and end forces (Newmark); only used
       /// for the friction work in the statistics.
       bool average_start_and_end = false;
+      /// Joint strength per metre of contact length (N/m): tensile
+      /// strength and cohesion of the joint material times the thickness.
+      /// Contacts that touch at the start of the run are bonded with it
+      /// until they break (see doc/contact.md, "Bonded joints").
+      double bond_tension  = 0;
+      double bond_cohesion = 0;
     };
 
     /**
@@ -94,6 +100,10 @@ namespace ndda
       unsigned int n_vertex_springs = 0;
       unsigned int n_vertex_vertex  = 0;
       unsigned int n_iterations     = 0;
+      /// Bonded contacts (joint cohesion and tension intact) at the end of
+      /// the step, and the contact length they carry (m).
+      unsigned int n_bonded      = 0;
+      double       bonded_length = 0;
       /// Largest penetration (m, positive) of a closed contact at the end
       /// of the step.
       double max_penetration = 0;
@@ -311,6 +321,16 @@ namespace ndda
         /// option's gap has it subtracted), so that a contact that appears
         /// inside an overlap does not add the overlap's spring energy.
         double offset = 0;
+        /// The joint's cohesion and tension hold this contact (it touched
+        /// at the start of the run and has not broken since).
+        bool bonded       = false;
+        bool start_bonded = false;
+        /// A contact on a bonded joint from the other side: a bonded joint
+        /// is tied from one side only (doc/contact.md, "Bonded joints"),
+        /// this contact stays open until the bonds next to it break.
+        bool shadowed = false;
+        /// Length of joint the contact stands for (m), see bond_length().
+        double bond_length = 0;
       };
 
       /** What is carried from one step to the next, per contact key. */
@@ -320,6 +340,7 @@ namespace ndda
         double anchor;
         int    sign;
         double offset;
+        bool   bonded;
       };
 
       static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
@@ -370,6 +391,40 @@ namespace ndda
       bool
       update_scale(Contact &c, const dealii::Vector<double> &d);
 
+      /**
+       * The length of joint a bonded vertex-edge contact of @p vertex on
+       * @p edge stands for: of each boundary edge at the vertex that runs
+       * along @p edge (antiparallel within 10 degrees), the part that lies
+       * on @p edge and the straight continuation of the other side's
+       * boundary beyond it; half of it if the edge's other end lies on the
+       * joint as well (and so has a contact of its own), all of it
+       * otherwise. The lengths of the contacts on a joint add up to the
+       * joint's length.
+       */
+      double
+      bond_length(const std::vector<Point<2>> &vertices,
+                  const unsigned int           vertex,
+                  const unsigned int           edge) const;
+
+      /**
+       * Is a contact of @p vertex on @p edge the side a bonded joint is
+       * tied from: the vertex's block has the finer boundary (shorter mean
+       * boundary edge; the smaller block index if equal; within one block,
+       * the smaller vertex index)? The finer side has more contacts to
+       * share the joint's forces.
+       */
+      bool
+      bonding_side(const unsigned int vertex, const unsigned int edge) const;
+
+      /**
+       * Does the bond of a bonded, locked contact hold under the solution
+       * @p d: the normal spring's tension below tensile strength times
+       * length, and the shear spring's force below the Mohr-Coulomb limit
+       * cohesion times length plus friction times normal force?
+       */
+      bool
+      bond_holds(const Contact &c, const dealii::Vector<double> &d) const;
+
       /** Closed-state classification of a resolved contact. */
       State
       classify(const Contact                &c,
@@ -389,12 +444,14 @@ namespace ndda
       unsigned int
       sliding_option(const Contact &c, const dealii::Vector<double> &d) const;
 
-      ContactSettings                                    settings;
-      DofAccess                                          dofs;
-      std::vector<BoundaryEdge>                          edges;
-      std::vector<double>                                edge_friction;
-      std::vector<double>                                vertex_friction;
-      std::vector<std::vector<unsigned int>>             edges_at_vertex;
+      ContactSettings                        settings;
+      DofAccess                              dofs;
+      std::vector<BoundaryEdge>              edges;
+      std::vector<double>                    edge_friction;
+      std::vector<double>                    vertex_friction;
+      std::vector<std::vector<unsigned int>> edges_at_vertex;
+      /// Mean boundary edge length of every block (m).
+      std::vector<double>                                block_edge_length;
       std::vector<Contact>                               contacts;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
@@ -404,6 +461,8 @@ namespace ndda
       std::set<std::tuple<unsigned int, unsigned int, unsigned int>>
                         open_last_step;
       ContactStatistics statistics;
+      /// No step accepted yet: contacts that touch now are bonded.
+      bool first_step = true;
       /// Forces of all springs at the end of the last accepted step.
       dealii::Vector<double> end_force;
     };
