@@ -1,0 +1,209 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The fracture criterion registry (ASPECT-style plugins), the linear
+// crossing time shared by the criteria, and subsection Fracture.
+
+#include <deal.II/base/exceptions.h>
+
+#include <ndda/fracture/fracture_criterion.h>
+
+#include <map>
+
+namespace ndda
+{
+  namespace fracture
+  {
+    using namespace dealii;
+
+    // The built-in criteria, see NDDA_REGISTER_FRACTURE_CRITERION.
+    void
+    link_fracture_criterion_MohrCoulomb();
+    void
+    link_fracture_criterion_MaximumPrincipalStress();
+
+    namespace
+    {
+      struct RegistryEntry
+      {
+        std::string description;
+        void (*declare_parameters)(ParameterHandler &);
+        std::unique_ptr<FractureCriterion> (*create)();
+      };
+
+      using Registry = std::map<std::string, RegistryEntry>;
+
+      /**
+       * The registry, built on first use: registrations run during static
+       * initialization, in an order nobody controls.
+       */
+      Registry &
+      registry()
+      {
+        static Registry criteria;
+        return criteria;
+      }
+
+      /** The registry, for lookups: with the built-in criteria linked in. */
+      const Registry &
+      registered_criteria()
+      {
+        link_fracture_criterion_MohrCoulomb();
+        link_fracture_criterion_MaximumPrincipalStress();
+        return registry();
+      }
+    } // namespace
+
+
+
+    std::optional<double>
+    limit_crossing_time(const double excess_start, const double excess_end)
+    {
+      if (excess_start > 0.)
+        return 0.;
+      if (excess_end > 0.)
+        // excess_start <= 0 < excess_end: the ratio lies in [0, 1).
+        return excess_start / (excess_start - excess_end);
+      return std::nullopt;
+    }
+
+
+
+    EdgeFailure
+    earlier_failure(const std::optional<double> &tension_time,
+                    const std::optional<double> &shear_time)
+    {
+      EdgeFailure failure;
+      if (tension_time && (!shear_time || *tension_time <= *shear_time))
+        failure = {FailureMode::tension, *tension_time};
+      else if (shear_time)
+        failure = {FailureMode::shear, *shear_time};
+      return failure;
+    }
+
+
+
+    void
+    FractureCriterion::parse_parameters(ParameterHandler &)
+    {}
+
+
+
+    void
+    register_fracture_criterion(const std::string &name,
+                                const std::string &description,
+                                void (*declare_parameters)(ParameterHandler &),
+                                std::unique_ptr<FractureCriterion> (*create)())
+    {
+      AssertThrow(registry().count(name) == 0,
+                  ExcMessage("Two fracture criteria are registered under "
+                             "the name '" +
+                             name + "'."));
+      AssertThrow(name.find('|') == std::string::npos,
+                  ExcMessage("The fracture criterion name '" + name +
+                             "' contains '|'."));
+      registry()[name] = {description, declare_parameters, create};
+    }
+
+
+
+    std::vector<std::string>
+    fracture_criterion_names()
+    {
+      std::vector<std::string> names;
+      for (const auto &[name, entry] : registered_criteria())
+        names.push_back(name);
+      return names;
+    }
+
+
+
+    std::string
+    fracture_criterion_selection()
+    {
+      std::string selection;
+      for (const std::string &name : fracture_criterion_names())
+        selection += (selection.empty() ? "" : "|") + name;
+      return selection;
+    }
+
+
+
+    std::unique_ptr<FractureCriterion>
+    create_fracture_criterion(const std::string &name)
+    {
+      const Registry &criteria = registered_criteria();
+      const auto      entry    = criteria.find(name);
+      if (entry == criteria.end())
+        {
+          std::string known;
+          for (const std::string &n : fracture_criterion_names())
+            known += (known.empty() ? "" : ", ") + n;
+          AssertThrow(false,
+                      ExcMessage("Fracture/Criterion: '" + name +
+                                 "' is not a fracture criterion. Known "
+                                 "criteria: " +
+                                 known + "."));
+        }
+      return entry->second.create();
+    }
+
+
+
+    void
+    Parameters::declare_parameters(ParameterHandler &prm)
+    {
+      const Registry &criteria = registered_criteria();
+      std::string     documentation =
+        "Which criterion decides when, within a step, an interior edge of "
+        "a block cracks (thesis chapter 5, doc/fracture.md). Each "
+        "criterion reads its own entries from the subsection of its name. "
+        "The criteria:";
+      for (const auto &[name, entry] : criteria)
+        documentation += "\n\n'" + name + "': " + entry.description;
+      prm.enter_subsection("Fracture");
+      {
+        prm.declare_entry("Criterion",
+                          "Mohr-Coulomb",
+                          Patterns::Selection(fracture_criterion_selection()),
+                          documentation);
+        prm.declare_entry(
+          "Edge stress",
+          "cell average",
+          Patterns::Selection("cell average|nodal average"),
+          "The stress tensor of an edge. cell average: the mean of the "
+          "stresses of the two cells beside it (thesis 5.21); nodal "
+          "average: the mean of the nodal stresses of its two vertices, a "
+          "nodal stress being the area-weighted mean of the stresses of the "
+          "cells around the vertex (smoother crack paths, thesis 8.2).");
+        for (const auto &[name, entry] : criteria)
+          {
+            prm.enter_subsection(name);
+            entry.declare_parameters(prm);
+            prm.leave_subsection();
+          }
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Parameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fracture");
+      {
+        edge_stress_method = prm.get("Edge stress") == "nodal average" ?
+                               EdgeStressMethod::nodal_average :
+                               EdgeStressMethod::cell_average;
+        criterion_name     = prm.get("Criterion");
+        std::unique_ptr<FractureCriterion> created =
+          create_fracture_criterion(criterion_name);
+        prm.enter_subsection(criterion_name);
+        created->parse_parameters(prm);
+        prm.leave_subsection();
+        criterion = std::move(created);
+      }
+      prm.leave_subsection();
+    }
+  } // namespace fracture
+} // namespace ndda
