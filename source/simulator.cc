@@ -16,6 +16,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <ndda/fracture/edge_stress.h>
 #include <ndda/simulator.h>
 
 #include <filesystem>
@@ -239,6 +240,7 @@ namespace ndda
     setup_dofs();
     setup_constraints();
     setup_contacts();
+    setup_fracture();
     setup_loads();
     setup_measure_points();
 
@@ -1595,6 +1597,105 @@ namespace ndda
 
 
   template <int dim>
+  void
+  Simulator<dim>::setup_fracture()
+  {
+    fracture_edges.clear();
+    fracture_strength.clear();
+    const auto &materials = parameters.materials.materials;
+    bool        any       = false;
+    for (const auto &m : materials)
+      any = any || m.fracture;
+    if (!any)
+      return;
+    const auto &block_mesh = mesh.get_block_mesh();
+    for (const auto &edge :
+         fracture::find_interior_edges(block_mesh.triangles,
+                                       block_mesh.vertices.size()))
+      {
+        const auto &m0 = materials[cell_material[edge.cells[0]]];
+        const auto &m1 = materials[cell_material[edge.cells[1]]];
+        if (!m0.fracture || !m1.fracture)
+          continue;
+        fracture::Strength strength;
+        strength.cohesion = std::min(m0.cohesion, m1.cohesion);
+        strength.friction_angle =
+          std::min(m0.friction_angle, m1.friction_angle) * numbers::PI / 180.;
+        strength.tensile_strength =
+          std::min(m0.tensile_strength, m1.tensile_strength);
+        fracture_edges.push_back(edge);
+        fracture_strength.push_back(strength);
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<SymmetricTensor<2, dim>>
+  Simulator<dim>::cell_mean_stresses() const
+  {
+    std::vector<SymmetricTensor<2, dim>> mean(stress.size());
+    for (unsigned int c = 0; c < stress.size(); ++c)
+      mean[c] = mean_cell_stress(c);
+    return mean;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_fracture(
+    const std::vector<Point<dim>>              &start_vertices,
+    const std::vector<SymmetricTensor<2, dim>> &start_stresses,
+    const double                                t0,
+    const double                                dt)
+  {
+    static_assert(dim == 2, "fracture is two-dimensional");
+    TimerOutput::Scope  scope(timer, "fracture check");
+    const auto         &block_mesh = mesh.get_block_mesh();
+    std::vector<double> area(stress.size());
+    for (unsigned int c = 0; c < stress.size(); ++c)
+      for (const double w : element_cache[c].weight)
+        area[c] += w;
+    const auto method = parameters.fracture.edge_stress_method;
+    const auto start  = fracture::edge_states(fracture_edges,
+                                             start_vertices,
+                                             block_mesh.triangles,
+                                             start_stresses,
+                                             area,
+                                             method);
+    const auto end    = fracture::edge_states(fracture_edges,
+                                           block_mesh.vertices,
+                                           block_mesh.triangles,
+                                           cell_mean_stresses(),
+                                           area,
+                                           method);
+    n_failing_edges   = 0;
+    for (unsigned int e = 0; e < fracture_edges.size(); ++e)
+      {
+        const fracture::EdgeFailure failure =
+          parameters.fracture.criterion->failure_in_step(start[e],
+                                                         end[e],
+                                                         fracture_strength[e]);
+        if (!failure.fails())
+          continue;
+        ++n_failing_edges;
+        const double t = t0 + failure.time * dt;
+        if (first_edge_failure.mode == fracture::FailureMode::none ||
+            t < first_edge_failure.time)
+          {
+            const auto &v               = fracture_edges[e].vertices;
+            first_edge_failure.mode     = failure.mode;
+            first_edge_failure.time     = t;
+            first_edge_failure.location = Point<dim>(
+              0.5 * (block_mesh.vertices[v[0]] + block_mesh.vertices[v[1]]));
+          }
+      }
+  }
+
+
+
+  template <int dim>
   SymmetricTensor<2, dim>
   Simulator<dim>::mean_cell_stress(const unsigned int cell) const
   {
@@ -1683,6 +1784,15 @@ namespace ndda
     // round-off of the step size keeps the step size (and factorization).
     const double remaining = parameters.control.end_time - time;
     double dt = remaining < time_step * (1. - 1e-9) ? remaining : time_step;
+    // The fracture check compares the step's end with its start.
+    const double                         t0 = time;
+    std::vector<Point<dim>>              start_vertices;
+    std::vector<SymmetricTensor<2, dim>> start_stresses;
+    if (!fracture_edges.empty())
+      {
+        start_vertices = mesh.get_block_mesh().vertices;
+        start_stresses = cell_mean_stresses();
+      }
     unsigned int cuts            = 0;
     unsigned int raises          = 0;
     StepResult   result          = StepResult::accepted;
@@ -1743,6 +1853,8 @@ namespace ndda
     step_cuts += cuts;
     ++step_number;
     last_dt = dt;
+    if (!fracture_edges.empty())
+      check_fracture(start_vertices, start_stresses, t0, dt);
     // After a cut, grow back towards the nominal step.
     time_step = std::min(2. * dt, parameters.control.time_step);
     record_measure_points();
@@ -1757,6 +1869,8 @@ namespace ndda
     statistics.add_value("Kinetic energy (J)", kinetic_energy());
     statistics.add_value("Strain energy (J)", strain_energy());
     statistics.add_value("Max increment (m)", max_increment);
+    if (!fracture_edges.empty())
+      statistics.add_value("Failing edges", n_failing_edges);
     if (parameters.contact.enabled)
       {
         const auto &c = contacts.get_statistics();

@@ -230,6 +230,25 @@ namespace ndda
     double
     energy_error() const;
 
+    /**
+     * The earliest edge failure the fracture check has found so far: the
+     * time (s), the edge's midpoint at the step's end, and the mode.
+     * Without fracturing materials, or before any edge fails, mode is
+     * none.
+     */
+    struct EdgeFailureRecord
+    {
+      fracture::FailureMode mode = fracture::FailureMode::none;
+      double                time = 0;
+      Point<dim>            location;
+    };
+
+    const EdgeFailureRecord &
+    get_first_edge_failure() const
+    {
+      return first_edge_failure;
+    }
+
     /** Wall time spent in the last call to do_time_step() (s). */
     double
     last_step_wall_time() const
@@ -319,6 +338,28 @@ namespace ndda
      * matrix on it (their entries are zero then). */
     void
     reinit_matrices(DynamicSparsityPattern &dsp);
+
+    /** Find the interior edges that may fracture (setup). */
+    void
+    setup_fracture();
+
+    /** Area-weighted mean stress of every cell. */
+    std::vector<SymmetricTensor<2, dim>>
+    cell_mean_stresses() const;
+
+    /**
+     * Check the fracturable edges against the fracture criterion, from the
+     * step's start (@p start_vertices, @p start_stresses) to its end (the
+     * present state); a step of length @p dt that started at @p t0.
+     * Counts the failing edges and keeps the earliest failure of the run.
+     * Detection only: the edges are not split yet.
+     */
+    void
+    check_fracture(const std::vector<Point<dim>>              &start_vertices,
+                   const std::vector<SymmetricTensor<2, dim>> &start_stresses,
+                   const double                                t0,
+                   const double                                dt);
+
 
     /** How one attempt at a time step ended. */
     enum class StepResult
@@ -466,6 +507,13 @@ namespace ndda
     bool                      is_set_up              = false;
     bool                      parameters_from_file   = false;
     double                    last_dt                = 0;
+
+    /// Interior edges of the blocks whose material may fracture, and the
+    /// strength of each (the weaker of its two cells' materials).
+    std::vector<fracture::InteriorEdge> fracture_edges;
+    std::vector<fracture::Strength>     fracture_strength;
+    EdgeFailureRecord                   first_edge_failure;
+    unsigned int                        n_failing_edges = 0;
 
     TableHandler                                statistics;
     double                                      next_output_time = 0;

@@ -521,6 +521,13 @@ namespace ndda
                         "0",
                         Patterns::Double(0.),
                         "Cohesion (Pa), used by fracture.");
+      prm.declare_entry("Fracture",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether cells of this material may crack: their "
+                        "interior edges are checked against "
+                        "Fracture/Criterion with this material's "
+                        "cohesion, friction angle and tensile strength.");
       prm.declare_entry("Tensile strength",
                         "0",
                         Patterns::Double(0.),
@@ -558,6 +565,7 @@ namespace ndda
       cohesion         = prm.get_double("Cohesion");
       tensile_strength = prm.get_double("Tensile strength");
       viscosity        = prm.get_double("Viscosity");
+      fracture         = prm.get_bool("Fracture");
     }
 
 
@@ -1172,6 +1180,7 @@ namespace ndda
       BoundaryConditions::declare_parameters(prm, names.boundary_conditions);
       Bolts::declare_parameters(prm, names.bolts);
       Output::declare_parameters(prm);
+      fracture::Parameters::declare_parameters(prm);
     }
 
 
@@ -1273,6 +1282,7 @@ namespace ndda
       loads.parse_parameters(prm, names.point_loads, names.line_loads);
       boundary_conditions.parse_parameters(prm, names.boundary_conditions);
       bolts.parse_parameters(prm, names.bolts);
+      fracture.parse_parameters(prm);
       output.parse_parameters(prm, scene_name);
 
       AssertThrow(!output.write_hdf5 || control.element_degree == 1,

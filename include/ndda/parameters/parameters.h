@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ndda/fracture/fracture_criterion.h>
 #include <ndda/geometry/block_mesh.h>
 
 #include <string>
@@ -143,6 +144,8 @@ namespace ndda
       double cohesion;
       double tensile_strength;
       double viscosity;
+      /// Cells of this material may crack (Fracture subsection).
+      bool fracture;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -330,15 +333,16 @@ namespace ndda
      */
     struct Parameters
     {
-      std::string        scene_name;
-      Control            control;
-      Contact            contact;
-      Materials          materials;
-      Geometry           geometry;
-      Loads              loads;
-      BoundaryConditions boundary_conditions;
-      Bolts              bolts;
-      Output             output;
+      std::string          scene_name;
+      Control              control;
+      Contact              contact;
+      Materials            materials;
+      Geometry             geometry;
+      Loads                loads;
+      BoundaryConditions   boundary_conditions;
+      Bolts                bolts;
+      Output               output;
+      fracture::Parameters fracture;
 
       /** The name lists that decide which subsections exist. */
       struct NameLists
