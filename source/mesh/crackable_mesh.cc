@@ -5,12 +5,12 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <ndda/mesh/crackable_mesh.h>
+#include <ndda/mesh/topology.h>
 
 #include <algorithm>
 #include <fstream>
 #include <map>
 #include <numeric>
-#include <set>
 
 namespace ndda
 {
@@ -54,8 +54,8 @@ namespace ndda
 
     std::vector<unsigned int> vertex_block(mesh.vertices.size(),
                                            numbers::invalid_unsigned_int);
-    std::map<std::array<unsigned int, 2>, unsigned int> edge_count;
-    std::set<std::array<unsigned int, 3>>               seen;
+    // Sorted vertex triples with their triangle, to find duplicates.
+    std::vector<std::array<unsigned int, 4>> sorted_triangles(n_cells);
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         const auto &t = mesh.triangles[c];
@@ -73,27 +73,12 @@ namespace ndda
                       (area < 0 ? " is clockwise." : " has zero area.") +
                       " Every triangle must be counter-clockwise "
                       "with positive area."));
-        auto sorted = t;
-        std::sort(sorted.begin(), sorted.end());
+        auto &sorted = sorted_triangles[c];
+        sorted       = {{t[0], t[1], t[2], c}};
+        std::sort(sorted.begin(), sorted.begin() + 3);
         AssertThrow(sorted[0] != sorted[1] && sorted[1] != sorted[2],
                     ExcMessage("Mesh: " + describe(mesh, c) +
                                " repeats a vertex."));
-        AssertThrow(seen.insert(sorted).second,
-                    ExcMessage("Mesh: " + describe(mesh, c) +
-                               " appears twice."));
-        for (unsigned int e = 0; e < 3; ++e)
-          {
-            std::array<unsigned int, 2> edge = {{t[e], t[(e + 1) % 3]}};
-            if (edge[0] > edge[1])
-              std::swap(edge[0], edge[1]);
-            AssertThrow(++edge_count[edge] <= 2,
-                        ExcMessage("Mesh: the edge between vertices " +
-                                   std::to_string(edge[0]) + " and " +
-                                   std::to_string(edge[1]) +
-                                   " is shared by more than two triangles, "
-                                   "e.g. " +
-                                   describe(mesh, c) + "."));
-          }
         for (const unsigned int v : t)
           {
             if (vertex_block[v] == numbers::invalid_unsigned_int)
@@ -107,6 +92,17 @@ namespace ndda
                           "not share vertices."));
           }
       }
+    std::sort(sorted_triangles.begin(), sorted_triangles.end());
+    for (unsigned int i = 1; i < n_cells; ++i)
+      AssertThrow(!std::equal(sorted_triangles[i].begin(),
+                              sorted_triangles[i].begin() + 3,
+                              sorted_triangles[i - 1].begin()),
+                  ExcMessage("Mesh: " + describe(mesh, sorted_triangles[i][3]) +
+                             " appears twice."));
+    // All triangles are counter-clockwise, so an edge shared by more than
+    // two triangles is run through twice in the same direction: the side
+    // index refuses it.
+    const topology::HalfEdges half_edges(mesh.triangles, mesh.vertices.size());
     for (unsigned int v = 0; v < vertex_block.size(); ++v)
       AssertThrow(vertex_block[v] != numbers::invalid_unsigned_int,
                   ExcMessage("Mesh: vertex " + std::to_string(v) +
