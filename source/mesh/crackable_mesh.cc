@@ -8,14 +8,25 @@
 #include <ndda/mesh/topology.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <numeric>
+#include <string>
+#include <unordered_set>
 
 namespace ndda
 {
   namespace
   {
+    /** Key of an undirected edge. */
+    std::uint64_t
+    edge_key(const unsigned int a, const unsigned int b)
+    {
+      return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+    }
+
+
     double
     signed_area(const std::vector<Point<2>>       &vertices,
                 const std::array<unsigned int, 3> &t)
@@ -115,10 +126,14 @@ namespace ndda
   CrackableMesh::build(const geometry::BlockMesh &mesh)
   {
     check(mesh);
-    block_mesh  = mesh;
-    block_names = mesh.block_names;
-    cell_block  = mesh.cell_block;
+    install(geometry::BlockMesh(mesh));
+  }
 
+
+
+  void
+  CrackableMesh::install(geometry::BlockMesh &&mesh)
+  {
     std::vector<CellData<2>> cells(mesh.triangles.size(), CellData<2>(3));
     for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
       {
@@ -126,6 +141,8 @@ namespace ndda
           cells[c].vertices[v] = mesh.triangles[c][v];
         cells[c].material_id = mesh.cell_material[c];
       }
+    // The same Triangulation object, refilled: a DoFHandler built on it
+    // stays attached (and is cleared by deal.II's clear signal).
     triangulation.clear();
     triangulation.create_triangulation(mesh.vertices, cells, SubCellData());
 
@@ -136,6 +153,171 @@ namespace ndda
         AssertThrow(cell->vertex_index(v) ==
                       mesh.triangles[cell->active_cell_index()][v],
                     ExcInternalError());
+
+    block_mesh  = std::move(mesh);
+    block_names = block_mesh.block_names;
+    cell_block  = block_mesh.cell_block;
+    crack_keys.clear();
+    for (const auto &e : block_mesh.crack_edges)
+      crack_keys.push_back(edge_key(e[0], e[1]));
+    std::sort(crack_keys.begin(), crack_keys.end());
+    crack_keys.erase(std::unique(crack_keys.begin(), crack_keys.end()),
+                     crack_keys.end());
+  }
+
+
+
+  bool
+  CrackableMesh::is_cracked(const unsigned int a, const unsigned int b) const
+  {
+    return std::binary_search(crack_keys.begin(),
+                              crack_keys.end(),
+                              edge_key(a, b));
+  }
+
+
+
+  CrackResult
+  CrackableMesh::crack(const std::vector<std::array<unsigned int, 2>> &edges)
+  {
+    const unsigned int n_vertices = block_mesh.vertices.size();
+    const unsigned int n_cells    = block_mesh.triangles.size();
+    const unsigned int n_blocks   = block_names.size();
+
+    // 1. Every edge must be an interior edge: two triangles run through it,
+    // in opposite directions. Kept as (smaller vertex, larger vertex, side
+    // of the triangle on the left of smaller -> larger).
+    const topology::HalfEdges half_edges(block_mesh.triangles, n_vertices);
+    std::vector<std::array<unsigned int, 3>> to_crack;
+    to_crack.reserve(edges.size());
+    for (const auto &e : edges)
+      {
+        const std::string edge = "Crack: the edge between vertices " +
+                                 std::to_string(e[0]) + " and " +
+                                 std::to_string(e[1]);
+        AssertThrow(e[0] < n_vertices && e[1] < n_vertices,
+                    ExcMessage(edge + " does not exist: the mesh has " +
+                               std::to_string(n_vertices) + " vertices."));
+        AssertThrow(e[0] != e[1],
+                    ExcMessage(edge + " joins a vertex to itself."));
+        const unsigned int a     = std::min(e[0], e[1]);
+        const unsigned int b     = std::max(e[0], e[1]);
+        const auto        &x     = block_mesh.vertices;
+        const std::string  where = edge + " (at " +
+                                  Utilities::to_string(x[a][0]) + ", " +
+                                  Utilities::to_string(x[a][1]) + " and " +
+                                  Utilities::to_string(x[b][0]) + ", " +
+                                  Utilities::to_string(x[b][1]) + ")";
+        const unsigned int left  = half_edges.find(a, b);
+        const unsigned int right = half_edges.find(b, a);
+        AssertThrow(left != numbers::invalid_unsigned_int ||
+                      right != numbers::invalid_unsigned_int,
+                    ExcMessage(where + " is not an edge of the mesh."));
+        AssertThrow(!is_cracked(a, b),
+                    ExcMessage(where + " is a crack already."));
+        const unsigned int side =
+          left != numbers::invalid_unsigned_int ? left : right;
+        AssertThrow(left != numbers::invalid_unsigned_int &&
+                      right != numbers::invalid_unsigned_int,
+                    ExcMessage(where + " lies on the boundary of block '" +
+                               block_names[cell_block[side / 3]] +
+                               "' (only triangle " + std::to_string(side / 3) +
+                               " has it); only an interior edge, shared by "
+                               "two triangles, can crack."));
+        to_crack.push_back({{a, b, left}});
+      }
+    std::sort(to_crack.begin(), to_crack.end());
+    to_crack.erase(std::unique(to_crack.begin(), to_crack.end()),
+                   to_crack.end());
+
+    // 2. Split the vertices by fans. Cells keep their index and their local
+    // vertex order; only vertex indices change.
+    geometry::BlockMesh                      mesh = block_mesh;
+    std::vector<std::array<unsigned int, 2>> split_edges;
+    split_edges.reserve(to_crack.size());
+    for (const auto &e : to_crack)
+      split_edges.push_back({{e[0], e[1]}});
+    // A crack whose faces still share both vertices (both tips were inside
+    // the block) is still shared by two triangles; fans must not join
+    // across it when the crack grows.
+    for (const auto &e : block_mesh.crack_edges)
+      if (half_edges.find(e[1], e[0]) != numbers::invalid_unsigned_int)
+        split_edges.push_back(e);
+    CrackResult result;
+    result.vertex_origin =
+      geometry::split_vertices_along_edges(mesh, split_edges);
+    for (unsigned int v = n_vertices; v < mesh.vertices.size(); ++v)
+      result.new_vertices.push_back(v);
+
+    // 3. Blocks that fell apart. Visiting the cells in increasing order
+    // meets each block's lowest cell first: its component keeps the block.
+    const topology::HalfEdges       new_half_edges(mesh.triangles,
+                                             mesh.vertices.size());
+    unsigned int                    n_components = 0;
+    const std::vector<unsigned int> component =
+      topology::connected_components(new_half_edges, n_cells, n_components);
+    std::vector<unsigned int>       block_of_component(n_components,
+                                                 numbers::invalid_unsigned_int);
+    std::vector<bool>               block_kept(n_blocks, false);
+    std::vector<unsigned int>       next_suffix(n_blocks, 1);
+    std::unordered_set<std::string> names(block_names.begin(),
+                                          block_names.end());
+    result.block_origin.resize(n_blocks);
+    std::iota(result.block_origin.begin(), result.block_origin.end(), 0u);
+    result.block_children.resize(n_blocks);
+    for (unsigned int b = 0; b < n_blocks; ++b)
+      result.block_children[b] = {b};
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        unsigned int      &block     = block_of_component[component[c]];
+        const unsigned int old_block = mesh.cell_block[c];
+        if (block == numbers::invalid_unsigned_int)
+          {
+            if (!block_kept[old_block])
+              {
+                block                 = old_block;
+                block_kept[old_block] = true;
+              }
+            else
+              {
+                std::string name;
+                do
+                  name = block_names[old_block] + "." +
+                         std::to_string(next_suffix[old_block]++);
+                while (names.count(name) > 0);
+                names.insert(name);
+                block = mesh.block_names.size();
+                mesh.block_names.push_back(name);
+                result.block_origin.push_back(old_block);
+                result.block_children[old_block].push_back(block);
+              }
+          }
+        // Blocks share no vertices, so no component spans two blocks.
+        Assert(result.block_origin[block] == old_block, ExcInternalError());
+        mesh.cell_block[c] = block;
+      }
+
+    // The two faces of every cracked edge. Side j of cell c is still side
+    // j of cell c.
+    for (const auto &e : to_crack)
+      {
+        const unsigned int sides[2] = {e[2], half_edges.twin(e[2])};
+        CrackedEdge        cracked;
+        cracked.old_vertices = {{e[0], e[1]}};
+        for (unsigned int i = 0; i < 2; ++i)
+          {
+            const auto &t    = mesh.triangles[sides[i] / 3];
+            cracked.cells[i] = sides[i] / 3;
+            cracked.faces[i] = {{t[sides[i] % 3], t[(sides[i] + 1) % 3]}};
+          }
+        result.cracked_edges.push_back(cracked);
+      }
+
+    // 4. Check and rebuild.
+    check(mesh);
+    result.cell_block = mesh.cell_block;
+    install(std::move(mesh));
+    return result;
   }
 
 

@@ -9,12 +9,81 @@
 
 #include <ndda/geometry/block_mesh.h>
 
+#include <array>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace ndda
 {
   using namespace dealii;
+
+  /**
+   * An edge that crack() has cracked: the two triangles that shared it and
+   * the two faces it has become.
+   *
+   * @ingroup mesh
+   */
+  struct CrackedEdge
+  {
+    /// The edge's vertices in the mesh before the crack, smaller index
+    /// first.
+    std::array<unsigned int, 2> old_vertices;
+    /// The two triangles (active cell indices, the same before and after):
+    /// cells[0] runs from old_vertices[0] to old_vertices[1] in its
+    /// counter-clockwise order (it lies on the left of that direction),
+    /// cells[1] on the right.
+    std::array<unsigned int, 2> cells;
+    /// The side of cells[i] on the crack, as vertices of the new mesh in
+    /// that cell's counter-clockwise order: faces[0] runs from the copy of
+    /// old_vertices[0] to the copy of old_vertices[1], faces[1] the other
+    /// way. Each face runs with its cell on the left (contact::BoundaryEdge's
+    /// orientation). At a crack tip inside the block the two faces share the
+    /// tip vertex; if both ends are such tips (thesis figure 5.4), the faces
+    /// share both vertices and are not boundary edges yet (see
+    /// CrackableMesh::crack()).
+    std::array<std::array<unsigned int, 2>, 2> faces;
+  };
+
+
+
+  /**
+   * What crack() did, as maps from the mesh before to the mesh after.
+   * Cells are not renumbered: cell c of the new mesh is cell c of the old
+   * one, with the same local vertex order and material id, so per-cell
+   * state is carried over by identity.
+   *
+   * @ingroup mesh
+   */
+  struct CrackResult
+  {
+    /// For every vertex of the new mesh, the vertex of the old mesh it was
+    /// copied from (new to old). Vertices of the old mesh keep their index
+    /// (vertex_origin[v] == v for v below the old number of vertices);
+    /// copies are appended. Use with state_transfer::transfer_vertex_data().
+    std::vector<unsigned int> vertex_origin;
+    /// The vertices the crack created, in increasing order (all indices at
+    /// or above the old number of vertices).
+    std::vector<unsigned int> new_vertices;
+    /// Block of every cell of the new mesh.
+    std::vector<unsigned int> cell_block;
+    /// For every block of the new mesh, the block of the old mesh it comes
+    /// from (new to old).
+    std::vector<unsigned int> block_origin;
+    /// For every block of the old mesh, the blocks of the new mesh it
+    /// became (old to new): first the block itself (same index), then the
+    /// blocks split off, in increasing order.
+    std::vector<std::vector<unsigned int>> block_children;
+    /// The cracked edges, one per distinct edge handed to crack(), ordered
+    /// by their old vertices. Only the edges of this call: a closed crack
+    /// of an earlier call that opens now (its tip split) is not listed;
+    /// get_block_mesh().crack_edges and CrackableMesh::is_cracked() cover
+    /// every crack face of the mesh.
+    std::vector<CrackedEdge> cracked_edges;
+  };
+
+
 
   /**
    * The scene's triangulation and its block structure. Every block is its
@@ -26,8 +95,11 @@ namespace ndda
    * because deal.II 9.4 accepts clockwise and degenerate triangles
    * silently.
    *
-   * Later: the topology needed by contact and fracture (boundary loops,
-   * cracked edges, node splitting and rebuild) lives here as well.
+   * Fracture cracks interior edges with crack() (node splitting, thesis
+   * section 5.3, DESIGN.md decision 6): the triangulation is rebuilt, cells
+   * keep their index and vertex order, vertices are copied, and a block
+   * that falls apart becomes several blocks. doc/fracture_mesh.md
+   * describes the rules.
    *
    * @ingroup mesh
    */
@@ -93,6 +165,65 @@ namespace ndda
     }
 
     /**
+     * Crack the mesh along interior edges (node splitting, thesis section
+     * 5.3; DESIGN.md decision 6), and rebuild the triangulation:
+     *  1. Every edge must be an interior edge of a block, shared by two
+     *     triangles, and not a crack already; otherwise an ExcMessage names
+     *     the edge and nothing changes. An edge given twice counts once.
+     *  2. Vertices are split by fans (geometry::split_vertices_along_edges):
+     *     around every vertex of a cracked edge, the triangles connected
+     *     through uncracked edges form a fan, and each fan gets its own copy
+     *     of the vertex. A crack tip inside a block keeps one vertex (no new
+     *     vertex), an end on a boundary or on an earlier crack gets one copy
+     *     per side (one or two new vertices per edge, thesis figure 5.5).
+     *     Cells keep their index, local vertex order and material id.
+     *     An edge whose ends both stay single (both are tips inside the
+     *     block, thesis figure 5.4) is only marked, as in the thesis: its
+     *     faces share both vertices, so deal.II and contact still see one
+     *     interior edge, and the crack cannot open until it grows. Later
+     *     cracks treat it as cracked: growing through one of its tips
+     *     splits that tip. is_cracked() tells such edges apart.
+     *  3. A block whose triangles are not connected through shared edges
+     *     (any block, not only a cracked one) becomes several blocks: the part
+     * that holds the block's lowest-index cell keeps the block's index and
+     * name, each other part (in the order of its lowest cell) gets the next
+     * free block index and the name "<name>.<k>" with the smallest k >= 1 that
+     * no block has yet.
+     *  4. The new mesh is checked (check()) and the triangulation is
+     *     rebuilt in place, as in build(): the Triangulation object stays
+     *     the same, so a DoFHandler attached to it stays attached, but
+     *     deal.II clears it (its degrees of freedom are gone) and it needs
+     *     distribute_dofs() again. Copy what the transfer needs from the
+     *     old DoFHandler (cell degrees of freedom, vertex degrees of
+     *     freedom) before calling crack(); see state_transfer.
+     * The crack faces are added to get_block_mesh().crack_edges.
+     *
+     * Cost: proportional to the number of cells and vertices, times a log
+     * for the sorts in split_vertices_along_edges() and check(); no step
+     * looks at pairs of cells or vertices. The rebuild of the
+     * triangulation dominates (doc/fracture_mesh.md has timings).
+     *
+     * @param edges Edges to crack, as pairs of vertex indices of the
+     *   current mesh, in either order.
+     * @return The maps from the old mesh to the new one.
+     */
+    CrackResult
+    crack(const std::vector<std::array<unsigned int, 2>> &edges);
+
+    /**
+     * Whether the edge between vertices @p a and @p b (in either order) is
+     * a crack face: an edge cracked by crack() or a face of a pre-existing
+     * crack of the scene (get_block_mesh().crack_edges). A crack whose two
+     * tips lie inside the block keeps both vertices, so its edge is still
+     * shared by two triangles and looks like an interior edge to everything
+     * that only sees triangles (deal.II's faces, contact::boundary_edges(),
+     * fracture::find_interior_edges()); callers that pick edges to crack
+     * must skip such edges. O(log n).
+     */
+    bool
+    is_cracked(const unsigned int a, const unsigned int b) const;
+
+    /**
      * Move every vertex by the given displacement (updated Lagrangian).
      */
     void
@@ -128,10 +259,20 @@ namespace ndda
     check(const geometry::BlockMesh &mesh);
 
   private:
+    /**
+     * Build the triangulation from @p mesh, which check() has accepted, and
+     * take the arrays over. The Triangulation object stays the same.
+     */
+    void
+    install(geometry::BlockMesh &&mesh);
+
     Triangulation<2>          triangulation;
     geometry::BlockMesh       block_mesh;
     std::vector<unsigned int> cell_block;
     std::vector<std::string>  block_names;
+    /// Keys (smaller vertex << 32 | larger vertex) of the edges in
+    /// block_mesh.crack_edges, sorted.
+    std::vector<std::uint64_t> crack_keys;
   };
 
   /**

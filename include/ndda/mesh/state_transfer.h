@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_mesh_state_transfer_h
+#define ndda_mesh_state_transfer_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/types.h>
+
+#include <string>
+#include <vector>
+
+namespace ndda
+{
+  /**
+   * Carry state across a node split (CrackableMesh::crack()). Cells keep
+   * their index and the order of their vertices, so per-cell state stays
+   * where it is; a vertex of the new mesh takes the state of the vertex it
+   * was copied from; a degree of freedom of the new mesh takes the value of
+   * the degree of freedom at the same place (same cell, same local index)
+   * of the old mesh. All three are exact copies: the two faces of a new
+   * crack start with the same displacement, velocity and stress history.
+   *
+   * @ingroup mesh
+   */
+  namespace state_transfer
+  {
+    /**
+     * Per-vertex state of the new mesh: the new vertex v gets
+     * @p old_values[new_to_old[v]].
+     *
+     * @param old_values One value per vertex of the old mesh.
+     * @param new_to_old For every vertex of the new mesh, the vertex of the
+     *   old mesh it comes from (CrackResult::vertex_origin).
+     */
+    template <typename T>
+    std::vector<T>
+    transfer_vertex_data(const std::vector<T>            &old_values,
+                         const std::vector<unsigned int> &new_to_old)
+    {
+      std::vector<T> new_values;
+      new_values.reserve(new_to_old.size());
+      for (const unsigned int v : new_to_old)
+        {
+          AssertIndexRange(v, old_values.size());
+          new_values.push_back(old_values[v]);
+        }
+      return new_values;
+    }
+
+    /**
+     * A vector of degrees of freedom on the new mesh from one on the old
+     * mesh, for any element (P1, P2, FESystem of them): for every cell c
+     * and local index i, new_values[new_cell_dofs[c n + i]] =
+     * old_values[old_cell_dofs[c n + i]], n being the number of degrees of
+     * freedom per cell. A degree of freedom of the new mesh lies in one fan
+     * of the old one, where all cells around it referred to the same old
+     * degree of freedom, so every write of it writes the same value. The
+     * degrees of freedom on a cracked edge (P2) or at a split vertex get
+     * copies.
+     *
+     * Rebuilding the triangulation clears a DoFHandler attached to it
+     * (deal.II connects DoFHandler::clear() to the triangulation's clear
+     * signal), so @p old_cell_dofs must be copied from the DoFHandler before
+     * CrackableMesh::crack() is called, for example as the simulator's
+     * cell_dof_indices cache.
+     *
+     * @param old_cell_dofs The degrees of freedom of every cell of the old
+     *   mesh, cell after cell in active cell index order.
+     * @param old_values Values on the old mesh.
+     * @param new_cell_dofs The same for the new mesh, after
+     *   DoFHandler::distribute_dofs(); same length as @p old_cell_dofs.
+     * @param new_values Values on the new mesh; must have the new number
+     *   of degrees of freedom.
+     */
+    template <typename VectorType>
+    void
+    transfer_dof_values(
+      const std::vector<dealii::types::global_dof_index> &old_cell_dofs,
+      const VectorType                                   &old_values,
+      const std::vector<dealii::types::global_dof_index> &new_cell_dofs,
+      VectorType                                         &new_values)
+    {
+      AssertThrow(old_cell_dofs.size() == new_cell_dofs.size(),
+                  dealii::ExcMessage(
+                    "transfer_dof_values: the old and new meshes have "
+                    "different numbers of cell degrees of freedom (" +
+                    std::to_string(old_cell_dofs.size()) + " and " +
+                    std::to_string(new_cell_dofs.size()) +
+                    "); node splitting keeps the cells and the element."));
+      for (std::size_t k = 0; k < new_cell_dofs.size(); ++k)
+        new_values[new_cell_dofs[k]] = old_values[old_cell_dofs[k]];
+    }
+  } // namespace state_transfer
+} // namespace ndda
+
+#endif
