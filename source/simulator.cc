@@ -17,6 +17,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <ndda/fracture/edge_stress.h>
+#include <ndda/mesh/state_transfer.h>
 #include <ndda/simulator.h>
 
 #include <filesystem>
@@ -1606,6 +1607,7 @@ namespace ndda
     bool        any       = false;
     for (const auto &m : materials)
       any = any || m.fracture;
+    fracture_enabled = any;
     if (!any)
       return;
     const auto &block_mesh = mesh.get_block_mesh();
@@ -1613,6 +1615,8 @@ namespace ndda
          fracture::find_interior_edges(block_mesh.triangles,
                                        block_mesh.vertices.size()))
       {
+        if (mesh.is_cracked(edge.vertices[0], edge.vertices[1]))
+          continue; // a closed crack (both tips inside a block)
         const auto &m0 = materials[cell_material[edge.cells[0]]];
         const auto &m1 = materials[cell_material[edge.cells[1]]];
         if (!m0.fracture || !m1.fracture)
@@ -1643,7 +1647,7 @@ namespace ndda
 
 
   template <int dim>
-  void
+  std::vector<std::array<unsigned int, 2>>
   Simulator<dim>::check_fracture(
     const std::vector<Point<dim>>              &start_vertices,
     const std::vector<SymmetricTensor<2, dim>> &start_stresses,
@@ -1671,6 +1675,9 @@ namespace ndda
                                            area,
                                            method);
     n_failing_edges   = 0;
+    // The edges that fail, with their failure times (fractions of the
+    // step); the earliest ones, within the crack window, crack first.
+    std::vector<std::pair<double, unsigned int>> failing;
     for (unsigned int e = 0; e < fracture_edges.size(); ++e)
       {
         const fracture::EdgeFailure failure =
@@ -1680,6 +1687,7 @@ namespace ndda
         if (!failure.fails())
           continue;
         ++n_failing_edges;
+        failing.emplace_back(failure.time, e);
         const double t = t0 + failure.time * dt;
         if (first_edge_failure.mode == fracture::FailureMode::none ||
             t < first_edge_failure.time)
@@ -1691,6 +1699,145 @@ namespace ndda
               0.5 * (block_mesh.vertices[v[0]] + block_mesh.vertices[v[1]]));
           }
       }
+    std::vector<std::array<unsigned int, 2>> edges;
+    if (failing.empty())
+      return edges;
+    std::sort(failing.begin(), failing.end());
+    const double last =
+      failing.front().first + parameters.fracture.crack_window + 1e-12;
+    for (const auto &[t, e] : failing)
+      if (t <= last)
+        edges.push_back(fracture_edges[e].vertices);
+    return edges;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::save_step_start(StepStart &start) const
+  {
+    start.displacement  = displacement;
+    start.velocity      = velocity;
+    start.inertia_force = inertia_force;
+    start.stress        = stress;
+    start.bolt_forces.clear();
+    for (const auto &bolt : bolts)
+      start.bolt_forces.push_back(bolt.axial_force);
+    start.vertices  = mesh.get_block_mesh().vertices;
+    start.contacts  = contacts;
+    start.time      = time;
+    start.load_work = load_work;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::restore_step_start(const StepStart &start)
+  {
+    displacement  = start.displacement;
+    velocity      = start.velocity;
+    inertia_force = start.inertia_force;
+    stress        = start.stress;
+    for (unsigned int b = 0; b < bolts.size(); ++b)
+      bolts[b].axial_force = start.bolt_forces[b];
+    const auto                 &now = mesh.get_block_mesh().vertices;
+    std::vector<Tensor<1, dim>> back(now.size());
+    for (unsigned int v = 0; v < now.size(); ++v)
+      back[v] = start.vertices[v] - now[v];
+    mesh.move_vertices(back);
+    contacts  = start.contacts;
+    time      = start.time;
+    load_work = start.load_work;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::crack_edges(
+    const std::vector<std::array<unsigned int, 2>> &edges)
+  {
+    TimerOutput::Scope scope(timer, "crack");
+    // What the old dof numbering carries, before crack() empties the
+    // DoFHandler: dof vectors by cell, the acceleration as M a over the
+    // lumped mass (a force vector must not be copied to both sides of a
+    // split node).
+    const std::vector<types::global_dof_index> old_cell_dofs = cell_dof_indices;
+    const auto                                 lumped_mass   = [this]() {
+      Vector<double> m(mass_matrix.m());
+      for (unsigned int i = 0; i < m.size(); ++i)
+        for (auto entry = mass_matrix.begin(i); entry != mass_matrix.end(i);
+             ++entry)
+          m[i] += entry->value();
+      return m;
+    };
+    const Vector<double> old_mass = lumped_mass();
+    Vector<double>       acceleration(inertia_force);
+    for (unsigned int i = 0; i < acceleration.size(); ++i)
+      if (old_mass[i] > 0.)
+        acceleration[i] /= old_mass[i];
+    const Vector<double> old_displacement(displacement);
+    const Vector<double> old_velocity(velocity);
+    std::vector<double>  bolt_forces;
+    for (const auto &bolt : bolts)
+      bolt_forces.push_back(bolt.axial_force);
+    const contact::ContactHandler old_contacts(contacts);
+
+    mesh.crack(edges);
+    n_cracked_edges += edges.size();
+
+    setup_dofs();
+    const auto transfer = [&](const Vector<double> &old, Vector<double> &now) {
+      now.reinit(dof_handler.n_dofs());
+      state_transfer::transfer_dof_values(old_cell_dofs,
+                                          old,
+                                          cell_dof_indices,
+                                          now);
+    };
+    transfer(old_displacement, displacement);
+    transfer(old_velocity, velocity);
+    Vector<double> new_acceleration;
+    transfer(acceleration, new_acceleration);
+    // Constraints, loads and measure points are found by position on the
+    // scene's initial geometry: set them up with the mesh moved back
+    // there, then move it forward again.
+    std::vector<Tensor<1, dim>> u(vertex_dofs.size());
+    for (unsigned int v = 0; v < vertex_dofs.size(); ++v)
+      for (unsigned int c = 0; c < dim; ++c)
+        u[v][c] = -displacement[vertex_dofs[v][c]];
+    mesh.move_vertices(u);
+    setup_constraints();
+    for (unsigned int b = 0; b < bolts.size(); ++b)
+      bolts[b].axial_force = bolt_forces[b];
+    setup_loads();
+    measure_points.clear(); // their histories stay
+    for (const auto &p : parameters.output.measure_points)
+      measure_points.push_back(
+        make_point_evaluator(p, "Output/Measure points"));
+    for (auto &x : u)
+      x *= -1.;
+    mesh.move_vertices(u);
+
+    setup_contacts();
+    if (parameters.contact.enabled)
+      contacts.carry_memory_from(old_contacts);
+    setup_fracture();
+
+    // Element matrices of all cells on the present geometry, global
+    // matrices, gravity, internal force, loaded faces; then M a on the new
+    // mesh.
+    element_cache.update(dof_handler, mapping, parameters.materials, false, 0.);
+    build_element_matrices(false);
+    update_loaded_faces();
+    inertia_force = lumped_mass();
+    inertia_force.scale(new_acceleration);
+    external_force.reinit(dof_handler.n_dofs());
+    assemble_external_force(time, external_force);
+    assembled_dt     = -1;
+    base_factorized  = false;
+    refactorize_next = false;
   }
 
 
@@ -1768,93 +1915,126 @@ namespace ndda
     else
       build_element_matrices(true);
 
-    // Contacts are detected once per step, on the geometry of its start;
-    // the detection distance covers every step size the cuts may try.
-    if (parameters.contact.enabled)
-      {
-        {
-          TimerOutput::Scope scope(timer, "contact detection");
-          contacts.begin_step(mesh.get_block_mesh().vertices,
-                              contact_threshold);
-        }
-        update_sparsity_for_contacts();
-      }
-
-    // The last step ends exactly at the end time; a remainder within
-    // round-off of the step size keeps the step size (and factorization).
-    const double remaining = parameters.control.end_time - time;
-    double dt = remaining < time_step * (1. - 1e-9) ? remaining : time_step;
-    // The fracture check compares the step's end with its start.
-    const double                         t0 = time;
-    std::vector<Point<dim>>              start_vertices;
-    std::vector<SymmetricTensor<2, dim>> start_stresses;
-    if (!fracture_edges.empty())
-      {
-        start_vertices = mesh.get_block_mesh().vertices;
-        start_stresses = cell_mean_stresses();
-      }
+    // The crack sequence (thesis 5.3): solve the step; if edges fail
+    // within it, go back to the step's start, crack the earliest of them,
+    // and solve the step again on the cracked mesh, until no edge fails
+    // (or the limit on crack events is reached).
+    const double t0      = time;
+    const bool splitting = fracture_enabled && parameters.fracture.split_edges;
+    StepStart  start;
+    if (splitting)
+      save_step_start(start);
+    unsigned int crack_events    = 0;
     unsigned int cuts            = 0;
     unsigned int raises          = 0;
-    StepResult   result          = StepResult::accepted;
     unsigned int open_close_cuts = 0;
-    while ((result = try_time_step(dt)) != StepResult::accepted)
+    crack_limit_hit              = false;
+    double dt                    = 0;
+    for (;;)
       {
+        // Contacts are detected once per step, on the geometry of its start;
+        // the detection distance covers every step size the cuts may try.
         if (parameters.contact.enabled)
-          contacts.restart_step();
-        if (result == StepResult::penalty_raised)
           {
-            ++raises;
-            AssertThrow(raises <= 30,
-                        ExcMessage("Step " + std::to_string(step_number + 1) +
-                                   " at t = " + Utilities::to_string(time) +
-                                   ": the automatic penalty was doubled 30 "
-                                   "times and the penetration still exceeds "
-                                   "Contact/Maximum penetration ratio. "
-                                   "Increase the ratio or reduce the time "
-                                   "step."));
-            continue;
+            {
+              TimerOutput::Scope scope(timer, "contact detection");
+              contacts.begin_step(mesh.get_block_mesh().vertices,
+                                  contact_threshold);
+            }
+            update_sparsity_for_contacts();
           }
-        ++cuts;
-        if (result == StepResult::not_settled)
-          ++open_close_cuts;
-        AssertThrow(
-          cuts <= parameters.control.max_step_cuts,
-          ExcMessage(
-            "Step " + std::to_string(step_number + 1) +
-            " at t = " + Utilities::to_string(time) + ": " +
-            (result == StepResult::not_settled ?
-               "the open-close iteration still changes contact states "
-               "after Contact/Open-close iterations = " +
-                 std::to_string(parameters.contact.max_open_close_iterations) +
-                 " solves" :
-               "the largest displacement increment " +
-                 Utilities::to_string(max_increment) +
-                 " m still exceeds Control/Maximum displacement ratio " +
-                 Utilities::to_string(
-                   parameters.control.max_displacement_ratio) +
-                 " of half the scene height") +
-            ", after " + std::to_string(cuts - 1) +
-            " step cuts. Increase 'Maximum step cuts' or the limit named, "
-            "or reduce the time step."));
-        dt *= 0.5;
-        // Steps that each need a cut shrink the step without bound when
-        // the motion diverges: stop rather than crawl.
-        AssertThrow(dt >= 1e-6 * parameters.control.time_step,
-                    ExcMessage(
-                      "Step " + std::to_string(step_number + 1) +
-                      " at t = " + Utilities::to_string(time) +
-                      ": the step size fell below 1e-6 of Control/Time step "
-                      "after cuts in step after step; the motion is "
-                      "diverging (largest increment " +
-                      Utilities::to_string(max_increment) +
-                      " m). Look at the last output and the statistics "
-                      "file; see doc/contact.md, 'Known limits'."));
+
+        // The last step ends exactly at the end time; a remainder within
+        // round-off of the step size keeps the step size (and factorization).
+        const double remaining = parameters.control.end_time - time;
+        dt = remaining < time_step * (1. - 1e-9) ? remaining : time_step;
+        // The fracture check compares the step's end with its start.
+        std::vector<Point<dim>>              start_vertices;
+        std::vector<SymmetricTensor<2, dim>> start_stresses;
+        if (!fracture_edges.empty())
+          {
+            start_vertices = mesh.get_block_mesh().vertices;
+            start_stresses = cell_mean_stresses();
+          }
+        StepResult result = StepResult::accepted;
+        while ((result = try_time_step(dt)) != StepResult::accepted)
+          {
+            if (parameters.contact.enabled)
+              contacts.restart_step();
+            if (result == StepResult::penalty_raised)
+              {
+                ++raises;
+                AssertThrow(raises <= 30,
+                            ExcMessage(
+                              "Step " + std::to_string(step_number + 1) +
+                              " at t = " + Utilities::to_string(time) +
+                              ": the automatic penalty was doubled 30 "
+                              "times and the penetration still exceeds "
+                              "Contact/Maximum penetration ratio. "
+                              "Increase the ratio or reduce the time "
+                              "step."));
+                continue;
+              }
+            ++cuts;
+            if (result == StepResult::not_settled)
+              ++open_close_cuts;
+            AssertThrow(
+              cuts <= parameters.control.max_step_cuts,
+              ExcMessage(
+                "Step " + std::to_string(step_number + 1) +
+                " at t = " + Utilities::to_string(time) + ": " +
+                (result == StepResult::not_settled ?
+                   "the open-close iteration still changes contact states "
+                   "after Contact/Open-close iterations = " +
+                     std::to_string(
+                       parameters.contact.max_open_close_iterations) +
+                     " solves" :
+                   "the largest displacement increment " +
+                     Utilities::to_string(max_increment) +
+                     " m still exceeds Control/Maximum displacement ratio " +
+                     Utilities::to_string(
+                       parameters.control.max_displacement_ratio) +
+                     " of half the scene height") +
+                ", after " + std::to_string(cuts - 1) +
+                " step cuts. Increase 'Maximum step cuts' or the limit named, "
+                "or reduce the time step."));
+            dt *= 0.5;
+            // Steps that each need a cut shrink the step without bound when
+            // the motion diverges: stop rather than crawl.
+            AssertThrow(
+              dt >= 1e-6 * parameters.control.time_step,
+              ExcMessage("Step " + std::to_string(step_number + 1) +
+                         " at t = " + Utilities::to_string(time) +
+                         ": the step size fell below 1e-6 of Control/Time step "
+                         "after cuts in step after step; the motion is "
+                         "diverging (largest increment " +
+                         Utilities::to_string(max_increment) +
+                         " m). Look at the last output and the statistics "
+                         "file; see doc/contact.md, 'Known limits'."));
+          }
+        if (!fracture_edges.empty())
+          {
+            const auto failing =
+              check_fracture(start_vertices, start_stresses, t0, dt);
+            if (splitting && !failing.empty())
+              {
+                if (crack_events < parameters.fracture.max_crack_events)
+                  {
+                    restore_step_start(start);
+                    crack_edges(failing);
+                    ++crack_events;
+                    save_step_start(start);
+                    continue;
+                  }
+                crack_limit_hit = true;
+              }
+          }
+        break;
       }
     step_cuts += cuts;
+    n_crack_events += crack_events;
     ++step_number;
     last_dt = dt;
-    if (!fracture_edges.empty())
-      check_fracture(start_vertices, start_stresses, t0, dt);
     // After a cut, grow back towards the nominal step.
     time_step = std::min(2. * dt, parameters.control.time_step);
     record_measure_points();
@@ -1869,7 +2049,13 @@ namespace ndda
     statistics.add_value("Kinetic energy (J)", kinetic_energy());
     statistics.add_value("Strain energy (J)", strain_energy());
     statistics.add_value("Max increment (m)", max_increment);
-    if (!fracture_edges.empty())
+    if (fracture_enabled && parameters.fracture.split_edges)
+      {
+        statistics.add_value("Crack events", n_crack_events);
+        statistics.add_value("Cracked edges", n_cracked_edges);
+        statistics.add_value("Crack limit hit", crack_limit_hit ? 1 : 0);
+      }
+    if (fracture_enabled)
       statistics.add_value("Failing edges", n_failing_edges);
     if (parameters.contact.enabled)
       {

@@ -249,6 +249,13 @@ namespace ndda
       return first_edge_failure;
     }
 
+    /** Edges cracked (split) since the start of the run. */
+    unsigned int
+    get_n_cracked_edges() const
+    {
+      return n_cracked_edges;
+    }
+
     /** Wall time spent in the last call to do_time_step() (s). */
     double
     last_step_wall_time() const
@@ -354,11 +361,44 @@ namespace ndda
      * Counts the failing edges and keeps the earliest failure of the run.
      * Detection only: the edges are not split yet.
      */
-    void
+    std::vector<std::array<unsigned int, 2>>
     check_fracture(const std::vector<Point<dim>>              &start_vertices,
                    const std::vector<SymmetricTensor<2, dim>> &start_stresses,
                    const double                                t0,
                    const double                                dt);
+
+    /**
+     * The state at a step's start that a step changes: kept so that a
+     * step in which edges crack can be solved again from its start on
+     * the cracked mesh (thesis 5.3, the crack sequence).
+     */
+    struct StepStart
+    {
+      Vector<double>                                    displacement;
+      Vector<double>                                    velocity;
+      Vector<double>                                    inertia_force;
+      std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
+      std::vector<double>                               bolt_forces;
+      std::vector<Point<dim>>                           vertices;
+      contact::ContactHandler                           contacts;
+      double                                            time      = 0;
+      double                                            load_work = 0;
+    };
+
+    void
+    save_step_start(StepStart &start) const;
+    void
+    restore_step_start(const StepStart &start);
+
+    /**
+     * Crack the given interior edges (node splitting, CrackableMesh::crack)
+     * and carry the whole state over to the new mesh: dof vectors through
+     * the cells (which keep their index), stresses by cell, contact memory
+     * (old vertices keep their index), bolt forces; everything that
+     * depends on the mesh is set up again.
+     */
+    void
+    crack_edges(const std::vector<std::array<unsigned int, 2>> &edges);
 
 
     /** How one attempt at a time step ended. */
@@ -513,7 +553,11 @@ namespace ndda
     std::vector<fracture::InteriorEdge> fracture_edges;
     std::vector<fracture::Strength>     fracture_strength;
     EdgeFailureRecord                   first_edge_failure;
-    unsigned int                        n_failing_edges = 0;
+    bool                                fracture_enabled = false;
+    unsigned int                        n_failing_edges  = 0;
+    unsigned int                        n_crack_events   = 0;
+    unsigned int                        n_cracked_edges  = 0;
+    bool                                crack_limit_hit  = false;
 
     TableHandler                                statistics;
     double                                      next_output_time = 0;

@@ -92,6 +92,19 @@ namespace ndda
 
 
     void
+    ContactHandler::carry_memory_from(const ContactHandler &old)
+    {
+      memory                  = old.memory;
+      open_last_step          = old.open_last_step;
+      first_step              = old.first_step;
+      settings                = old.settings;
+      statistics.contact_work = old.statistics.contact_work;
+      statistics.dissipation  = old.statistics.dissipation;
+    }
+
+
+
+    void
     ContactHandler::set_normal_stiffness(const double k)
     {
       settings.normal_stiffness = k;

@@ -175,6 +175,29 @@ namespace ndda
           "average: the mean of the nodal stresses of its two vertices, a "
           "nodal stress being the area-weighted mean of the stresses of the "
           "cells around the vertex (smoother crack paths, thesis 8.2).");
+        prm.declare_entry(
+          "Split edges",
+          "true",
+          Patterns::Bool(),
+          "true: edges that fail are split (node splitting, the crack "
+          "sequence of thesis 5.3); false: failing edges are only counted "
+          "in the statistics (detection).");
+        prm.declare_entry(
+          "Crack window",
+          "0",
+          Patterns::Double(0., 1.),
+          "Edges whose failure time lies within this fraction of the step "
+          "after the earliest one crack together with it; 0: one crack "
+          "event per failure time (edges failing at the same instant still "
+          "crack together).");
+        prm.declare_entry(
+          "Maximum crack events per step",
+          "50",
+          Patterns::Integer(1),
+          "Limit on crack events (split, rebuild, re-solve) within one "
+          "step; when it is reached the step is accepted with the edges "
+          "that still fail, and the statistics file says so ('Crack limit "
+          "hit').");
         for (const auto &[name, entry] : criteria)
           {
             prm.enter_subsection(name);
@@ -196,6 +219,9 @@ namespace ndda
                                EdgeStressMethod::nodal_average :
                                EdgeStressMethod::cell_average;
         criterion_name     = prm.get("Criterion");
+        split_edges        = prm.get_bool("Split edges");
+        crack_window       = prm.get_double("Crack window");
+        max_crack_events   = prm.get_integer("Maximum crack events per step");
         std::unique_ptr<FractureCriterion> created =
           create_fracture_criterion(criterion_name);
         prm.enter_subsection(criterion_name);

@@ -161,6 +161,16 @@ namespace ndda
                  const DofAccess                 &dofs,
                  const ContactSettings           &settings);
 
+      /**
+       * After a crack: take over what @p old remembers from the last step
+       * (states, anchors, bonds, open contacts) and its accumulated
+       * energies. The mesh's old vertices keep their indices through a
+       * crack, so the memory's keys stay valid; the vertex copies a crack
+       * makes start without memory.
+       */
+      void
+      carry_memory_from(const ContactHandler &old);
+
       /** Change the normal stiffness (automatic penalty). */
       void
       set_normal_stiffness(const double k);

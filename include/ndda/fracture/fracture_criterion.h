@@ -173,6 +173,13 @@ namespace ndda
       EdgeStressMethod edge_stress_method = EdgeStressMethod::cell_average;
       /// Name of the selected criterion, `set Criterion = ...`.
       std::string criterion_name;
+      /// Split failing edges (else only count them).
+      bool split_edges = true;
+      /// Fraction of the step after the earliest failure within which
+      /// failing edges crack in the same event.
+      double crack_window = 0;
+      /// Crack events per step at most.
+      unsigned int max_crack_events = 50;
       /// The selected criterion with its parameters read; stateless, so it
       /// may be shared.
       std::shared_ptr<const FractureCriterion> criterion;
