@@ -249,6 +249,19 @@ namespace ndda
       return first_edge_failure;
     }
 
+    /**
+     * Crack the given interior edges (pairs of vertex indices of
+     * get_mesh().get_block_mesh()) now, between steps: node splitting
+     * (CrackableMesh::crack), and the whole state carried over to the new
+     * mesh: dof vectors through the cells (which keep their index),
+     * stresses by cell, contact memory (old vertices keep their index),
+     * bolt forces; everything that depends on the mesh is set up again.
+     * The crack sequence of a step calls it; library users may call it to
+     * add discontinuities to a running scene.
+     */
+    void
+    crack_edges(const std::vector<std::array<unsigned int, 2>> &edges);
+
     /** Edges cracked (split) since the start of the run. */
     unsigned int
     get_n_cracked_edges() const
@@ -390,15 +403,6 @@ namespace ndda
     void
     restore_step_start(const StepStart &start);
 
-    /**
-     * Crack the given interior edges (node splitting, CrackableMesh::crack)
-     * and carry the whole state over to the new mesh: dof vectors through
-     * the cells (which keep their index), stresses by cell, contact memory
-     * (old vertices keep their index), bolt forces; everything that
-     * depends on the mesh is set up again.
-     */
-    void
-    crack_edges(const std::vector<std::array<unsigned int, 2>> &edges);
 
 
     /** How one attempt at a time step ended. */
