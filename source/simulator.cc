@@ -2078,7 +2078,9 @@ namespace ndda
     statistics.add_value("Wall time per step (s)", last_step_time);
     if (step_number == 1)
       {
-        std::vector<std::string> columns = {"Max increment (m)",
+        std::vector<std::string> columns = {"Time (s)",
+                                            "Time step size (s)",
+                                            "Max increment (m)",
                                             "Kinetic energy (J)",
                                             "Strain energy (J)",
                                             "Work of loads (J)",
