@@ -28,9 +28,9 @@
 //  - the kink angle: the angle from x' to that edge. A P1 mesh cracks
 //    along its edges only, so it is one of the directions of the mesh
 //    edges that leave the start point; the test prints them and asserts
-//    that the measured edge is the one nearest to the MTS angle (so one of
-//    the two around it). The error against the MTS angle is printed, not
-//    asserted: it is as large as the gaps between the mesh's edges.
+//    that the measured edge is the one nearest to the MTS angle. The error
+//    against the MTS angle is printed, not asserted: it is as large as the
+//    mesh's choice of edges there allows.
 //  - the wing's mean direction: from its start to the centroid of the new
 //    crack points within 10 mm of the start that lie nearer to this tip
 //    than to the other (the cracks branch and leave small pieces, so they
@@ -45,7 +45,7 @@
 //
 // Two meshes: 'Mesh size' 5 mm (about 2000 cells; the thesis has 1890) and
 // 2.5 mm (about 8000). Each run stops when the specimen is in two large
-// pieces (each with a tenth of the cells at least). Run time about 50 s in
+// pieces (each with a tenth of the cells at least). Run time about 40 s in
 // Release, nearly all of it the finer mesh.
 
 #include <deal.II/base/timer.h>
@@ -112,17 +112,16 @@ namespace
   struct Wing
   {
     Point<2>            tip;
-    Tensor<1, 2>        outward;                // x'
-    double              mts   = 0;              // degrees from x'
-    bool                found = false;          // a wing starts on this half
-    Point<2>            start;                  // its end on the crack
-    unsigned int        step = 0;               // step it appeared in
-    double              kink = 0;               // degrees from x'
-    std::vector<double> edge_angles;            // mesh edges at the start
-    bool                bracketing     = false; // kink is next to the MTS angle
-    double              nearest        = 0;     // the mesh edge nearest to it
-    double              mean_direction = 0;     // degrees from x', 10 mm
-    unsigned int        n_points       = 0;     // crack points within 10 mm
+    Tensor<1, 2>        outward;            // x'
+    double              mts   = 0;          // degrees from x'
+    bool                found = false;      // a wing starts on this half
+    Point<2>            start;              // its end on the crack
+    unsigned int        step = 0;           // step it appeared in
+    double              kink = 0;           // degrees from x'
+    std::vector<double> edge_angles;        // mesh edges at the start
+    double              nearest        = 0; // of those, nearest to mts
+    double              mean_direction = 0; // degrees from x', 10 mm
+    unsigned int        n_points       = 0; // crack points within 10 mm
     bool                exits          = false;
     Point<2>            exit;           // where it leaves the specimen
     double              exit_angle = 0; // tip -> exit, from the x axis
@@ -331,13 +330,6 @@ namespace
                     wing.edge_angles.push_back(a);
                 }
         std::sort(wing.edge_angles.begin(), wing.edge_angles.end());
-        const auto above = std::lower_bound(wing.edge_angles.begin(),
-                                            wing.edge_angles.end(),
-                                            wing.mts);
-        for (const auto it : {above - 1, above})
-          if (it >= wing.edge_angles.begin() && it < wing.edge_angles.end() &&
-              std::abs(*it - wing.kink) < 1e-6)
-            wing.bracketing = true;
         wing.nearest = *std::min_element(wing.edge_angles.begin(),
                                          wing.edge_angles.end(),
                                          [&](const double a, const double b) {
@@ -433,9 +425,8 @@ main(int argc, char **argv)
                     << "); mesh edges there:";
           for (const double a : wing.edge_angles)
             std::cout << ' ' << a;
-          std::cout << " deg; " << (wing.bracketing ? "" : "NOT ")
-                    << "one of the two around the MTS angle, nearest "
-                    << wing.nearest << " deg" << std::endl;
+          std::cout << " deg, nearest to the MTS angle " << wing.nearest
+                    << " deg" << std::endl;
           std::cout << "    mean direction within 10 mm (" << wing.n_points
                     << " points) " << wing.mean_direction << " deg (error "
                     << wing.mean_direction - wing.mts << "); ";
@@ -464,9 +455,6 @@ main(int argc, char **argv)
           check(wing.found, "a wing crack starts at each tip");
           check(wing.start.distance(wing.tip) < r.mean_edge,
                 "the wing starts within one mean edge of the tip");
-          check(wing.bracketing,
-                "the kink is one of the two mesh edges at the wing's start "
-                "around the MTS angle");
           check(std::abs(wing.kink - wing.nearest) < 1e-6,
                 "the kink is the mesh edge at the wing's start nearest to "
                 "the MTS angle");
