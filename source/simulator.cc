@@ -1674,7 +1674,9 @@ namespace ndda
                                            cell_mean_stresses(),
                                            area,
                                            method);
-    n_failing_edges   = 0;
+    const bool first_record_done =
+      first_edge_failure.mode != fracture::FailureMode::none;
+    n_failing_edges = 0;
     // The edges that fail, with their failure times (fractions of the
     // step); the earliest ones, within the crack window, crack first.
     std::vector<std::pair<double, unsigned int>> failing;
@@ -1689,8 +1691,12 @@ namespace ndda
         ++n_failing_edges;
         failing.emplace_back(failure.time, e);
         const double t = t0 + failure.time * dt;
-        if (first_edge_failure.mode == fracture::FailureMode::none ||
-            t < first_edge_failure.time)
+        // The first check that finds failing edges keeps the earliest of
+        // them; the re-solves after a crack do not change the record (a
+        // crack can make another edge fail earlier within the same step).
+        if (!first_record_done &&
+            (first_edge_failure.mode == fracture::FailureMode::none ||
+             t < first_edge_failure.time))
           {
             const auto &v               = fracture_edges[e].vertices;
             first_edge_failure.mode     = failure.mode;
