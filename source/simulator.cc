@@ -295,7 +295,7 @@ namespace ndda
 
   template <int dim>
   void
-  Simulator<dim>::setup_dofs()
+  Simulator<dim>::setup_dofs(const bool element_matrices)
   {
     const unsigned int degree = parameters.control.element_degree;
     fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
@@ -349,7 +349,9 @@ namespace ndda
     for (unsigned int d = 0; d < dim; ++d)
       gravity_load[d].reinit(n);
 
-    element_cache.update(dof_handler, mapping, parameters.materials, false, 0.);
+    if (element_matrices)
+      element_cache.update(
+        dof_handler, mapping, parameters.materials, false, 0.);
     double max_modulus = 0;
     for (const auto &m : parameters.materials.materials)
       max_modulus = std::max(max_modulus, m.youngs_modulus);
@@ -1794,7 +1796,7 @@ namespace ndda
     mesh.crack(edges);
     n_cracked_edges += edges.size();
 
-    setup_dofs();
+    setup_dofs(false);
     const auto transfer = [&](const Vector<double> &old, Vector<double> &now) {
       now.reinit(dof_handler.n_dofs());
       state_transfer::transfer_dof_values(old_cell_dofs,

@@ -332,8 +332,14 @@ namespace ndda
 
     void
     make_mesh(const Triangulation<dim> *triangulation);
+    /**
+     * Distribute the dofs and build the index caches and state vectors;
+     * with @p element_matrices also every cell's element matrices on the
+     * present geometry (crack_edges() computes them itself, after it has
+     * moved the mesh back and forth).
+     */
     void
-    setup_dofs();
+    setup_dofs(const bool element_matrices = true);
     void
     setup_constraints();
     void
