@@ -37,85 +37,13 @@
 #include <chrono>
 #include <cmath>
 
+#include "plates.h"
 #include "tests.h"
 
 using namespace ndda_tests;
 
 namespace
 {
-  /**
-   * The force P through plate @p block: P = -t sum_c A_c sigma_yy,c / h,
-   * h the plate's height, on the present geometry.
-   */
-  double
-  plate_force(const ndda::Simulator<2> &simulator,
-              const unsigned int        block,
-              const double              thickness)
-  {
-    const auto &mesh = simulator.get_mesh().get_block_mesh();
-    double      sum = 0, y_min = 1e9, y_max = -1e9;
-    for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
-      if (mesh.cell_block[c] == block)
-        {
-          const auto &t = mesh.triangles[c];
-          const auto  a = mesh.vertices[t[1]] - mesh.vertices[t[0]];
-          const auto  b = mesh.vertices[t[2]] - mesh.vertices[t[0]];
-          sum += 0.5 * (a[0] * b[1] - a[1] * b[0]) *
-                 simulator.mean_cell_stress(c)[1][1];
-          for (const unsigned int v : t)
-            {
-              y_min = std::min(y_min, mesh.vertices[v][1]);
-              y_max = std::max(y_max, mesh.vertices[v][1]);
-            }
-        }
-    return -thickness * sum / (y_max - y_min);
-  }
-
-  /** Kinetic energy of the blocks whose name starts with @p prefix. */
-  double
-  kinetic_energy_of(const ndda::Simulator<2> &simulator,
-                    const std::string        &prefix)
-  {
-    const auto            &mesh  = simulator.get_mesh();
-    const auto            &names = mesh.get_block_names();
-    const auto            &v     = simulator.get_velocity();
-    dealii::Vector<double> mv(v.size());
-    simulator.get_mass_matrix().vmult(mv, v);
-    std::vector<bool>                            in(v.size(), false);
-    std::vector<dealii::types::global_dof_index> dofs;
-    for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
-      if (names[mesh.block_of_cell(cell->active_cell_index())].rfind(prefix,
-                                                                     0) == 0)
-        {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (const auto i : dofs)
-            in[i] = true;
-        }
-    double energy = 0;
-    for (unsigned int i = 0; i < v.size(); ++i)
-      if (in[i])
-        energy += 0.5 * v[i] * mv[i];
-    return energy;
-  }
-
-  unsigned int
-  block_index(const ndda::Simulator<2> &simulator, const std::string &name)
-  {
-    const auto &names = simulator.get_mesh().get_block_names();
-    const auto  i     = std::find(names.begin(), names.end(), name);
-    check(i != names.end(), "block " + name + " exists");
-    return i - names.begin();
-  }
-
-  std::string
-  mode_name(const ndda::fracture::FailureMode mode)
-  {
-    return mode == ndda::fracture::FailureMode::tension ? "tension" :
-           mode == ndda::fracture::FailureMode::shear   ? "shear" :
-                                                          "none";
-  }
-
   struct Sample
   {
     double time, sxx, p_top, p_bottom, kinetic, strain;
@@ -158,7 +86,6 @@ main(int argc, char **argv)
     double              min_sxx = 1e30, min_p = 1e30;
     unsigned int        n_near = 0, n_far = 0, n_cracked_through = 0;
     double              y_low = 0, y_high = 0;
-    const auto         &mesh = simulator.get_mesh().get_block_mesh();
     while (simulator.get_time() < parameters.control.end_time - 1e-12 &&
            (through_time < 0 || simulator.get_time() < through_time + 2e-5))
       {
@@ -182,21 +109,9 @@ main(int argc, char **argv)
         min_p   = std::min(min_p, p_top);
         if (through_time > 0)
           continue; // two more steps: the tension is released
-        n_near = n_far = 0;
-        y_low = R, y_high = -R;
-        for (const auto &e : mesh.crack_edges)
-          {
-            const Point<2> m =
-              0.5 * (mesh.vertices[e[0]] + mesh.vertices[e[1]]);
-            if (std::abs(m[0]) < 0.2 * R)
-              {
-                ++n_near;
-                y_low  = std::min(y_low, m[1]);
-                y_high = std::max(y_high, m[1]);
-              }
-            else
-              ++n_far;
-          }
+        const DiameterCracks cracks = diameter_cracks(simulator, 0.2 * R);
+        n_near = cracks.n_near, n_far = cracks.n_far;
+        y_low = cracks.y_low, y_high = cracks.y_high;
         if (y_low < -0.85 * R && y_high > 0.85 * R)
           {
             through_time      = simulator.get_time();

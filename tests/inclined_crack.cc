@@ -61,72 +61,15 @@
 #include <set>
 
 #include "tests.h"
+#include "wings.h"
 
 using namespace ndda_tests;
+using namespace ndda_tests::wings;
 using dealii::Point;
 using dealii::Tensor;
 
 namespace
 {
-  constexpr double degree    = M_PI / 180.;
-  constexpr double tolerance = 1e-9; // coincident points (m)
-
-  /** Signed angle (degrees) from @p from to @p to, counter-clockwise
-   * positive, in (-180, 180]. */
-  double
-  angle_between(const Tensor<1, 2> &from, const Tensor<1, 2> &to)
-  {
-    return std::atan2(from[0] * to[1] - from[1] * to[0], from * to) / degree;
-  }
-
-  /** The MTS angle (degrees) at a tip whose crack points along @p x, under
-   * the far-field stress @p sigma, and the residual of 7.11 there. */
-  std::pair<double, double>
-  mts_angle(const Tensor<1, 2> &x, const dealii::SymmetricTensor<2, 2> &sigma)
-  {
-    Tensor<1, 2> y;
-    y[0]              = -x[1];
-    y[1]              = x[0];
-    const double KI   = y * (sigma * y);
-    const double KII  = x * (sigma * y);
-    const auto   hoop = [&](const double t) {
-      return std::cos(t / 2) *
-             (KI * std::pow(std::cos(t / 2), 2) - 1.5 * KII * std::sin(t));
-    };
-    double best = 0;
-    for (double t = -M_PI + 1e-6; t < M_PI; t += 1e-6)
-      if (hoop(t) > hoop(best))
-        best = t;
-    return {best / degree,
-            KI * std::sin(best) + KII * (3 * std::cos(best) - 1)};
-  }
-
-  bool
-  contains(const std::vector<Point<2>> &points, const Point<2> &p)
-  {
-    return std::any_of(points.begin(), points.end(), [&](const Point<2> &q) {
-      return q.distance(p) < tolerance;
-    });
-  }
-
-  struct Wing
-  {
-    Point<2>            tip;
-    Tensor<1, 2>        outward;            // x'
-    double              mts   = 0;          // degrees from x'
-    bool                found = false;      // a wing starts on this half
-    Point<2>            start;              // its end on the crack
-    unsigned int        step = 0;           // step it appeared in
-    double              kink = 0;           // degrees from x'
-    std::vector<double> edge_angles;        // mesh edges at the start
-    double              nearest        = 0; // of those, nearest to mts
-    double              mean_direction = 0; // degrees from x', 10 mm
-    unsigned int        n_points       = 0; // crack points within 10 mm
-    bool                exits          = false;
-    Point<2>            exit;           // where it leaves the specimen
-    double              exit_angle = 0; // tip -> exit, from the x axis
-  };
-
   struct RunResult
   {
     unsigned int        n_cells   = 0;
@@ -159,48 +102,22 @@ namespace
     simulator.setup();
     const auto &mesh = simulator.get_mesh();
 
-    // The initial position of every cell's corners.
-    const auto                          &start   = mesh.get_block_mesh();
-    const unsigned int                   n_cells = start.triangles.size();
-    std::vector<std::array<Point<2>, 3>> corner(n_cells);
-    double                               edge_sum = 0;
-    for (unsigned int c = 0; c < n_cells; ++c)
+    // The mean edge length at the start.
+    const auto        &start    = mesh.get_block_mesh();
+    const unsigned int n_cells  = start.triangles.size();
+    double             edge_sum = 0;
+    for (const auto &t : start.triangles)
       for (unsigned int j = 0; j < 3; ++j)
-        corner[c][j] = start.vertices[start.triangles[c][j]];
-    for (unsigned int c = 0; c < n_cells; ++c)
-      for (unsigned int j = 0; j < 3; ++j)
-        edge_sum += corner[c][j].distance(corner[c][(j + 1) % 3]);
+        edge_sum +=
+          start.vertices[t[j]].distance(start.vertices[t[(j + 1) % 3]]);
     result.n_cells   = n_cells;
     result.mean_edge = edge_sum / (3 * n_cells);
-    // Side 3 c + j of cell c runs from its corner j to corner j + 1.
-    const auto ends = [&](const unsigned int side) {
-      return std::array<Point<2>, 2>{
-        {corner[side / 3][side % 3], corner[side / 3][(side + 1) % 3]}};
-    };
-    // The sides of cells that are crack faces now.
-    const auto crack_sides = [&]() {
-      const auto &m = mesh.get_block_mesh();
-      std::map<std::pair<unsigned int, unsigned int>, unsigned int> side_of;
-      for (unsigned int c = 0; c < m.triangles.size(); ++c)
-        for (unsigned int j = 0; j < 3; ++j)
-          side_of[{m.triangles[c][j], m.triangles[c][(j + 1) % 3]}] = 3 * c + j;
-      std::set<unsigned int> sides;
-      for (const auto &e : m.crack_edges)
-        sides.insert(side_of.at({e[0], e[1]}));
-      return sides;
-    };
-    const std::set<unsigned int> initial_sides = crack_sides();
+    CrackRecorder recorder(simulator);
 
-    const auto    &crack    = parameters.geometry.blocks[0].cracks.at(0);
-    const Point<2> centre   = 0.5 * (crack.a + crack.b);
-    const double   half     = 0.5 * crack.a.distance(crack.b);
-    const auto     on_crack = [&](const Point<2> &p) {
-      const Tensor<1, 2> t = (crack.b - crack.a) / (2 * half);
-      const Tensor<1, 2> r = p - centre;
-      return std::abs(r[0] * t[1] - r[1] * t[0]) < tolerance &&
-             std::abs(r * t) < half + tolerance;
-    };
-    result.crack_node_spacing = 2 * half / (initial_sides.size() / 2);
+    const auto    &crack      = parameters.geometry.blocks[0].cracks.at(0);
+    const Point<2> centre     = 0.5 * (crack.a + crack.b);
+    const double   half       = 0.5 * crack.a.distance(crack.b);
+    result.crack_node_spacing = 2 * half / (recorder.n_initial_faces() / 2);
     dealii::SymmetricTensor<2, 2> load; // uniaxial tension along y
     load[1][1] = 1;
     for (unsigned int k = 0; k < 2; ++k)
@@ -215,16 +132,13 @@ namespace
 
     // Run until the specimen is in two large pieces (a tenth of the cells
     // at least).
-    std::map<unsigned int, unsigned int> new_sides; // side -> step
-    const double                         end_time = parameters.control.end_time;
+    const double end_time = parameters.control.end_time;
     while (simulator.get_time() < end_time - 1e-12)
       {
         simulator.do_time_step();
         const unsigned int step = simulator.get_step_number();
-        for (const unsigned int s : crack_sides())
-          if (initial_sides.count(s) == 0 && new_sides.count(s) == 0)
-            new_sides[s] = step;
-        if (!new_sides.empty() && result.first_crack_step == 0)
+        recorder.record();
+        if (recorder.has_new_cracks() && result.first_crack_step == 0)
           {
             // Energies at the end of the first step with a crack. The
             // stretching the top imposes has v_y = 4 y (y initial).
@@ -266,20 +180,7 @@ namespace
       std::min(failure.location.distance(crack.a),
                failure.location.distance(crack.b));
 
-    // The new crack edges (each once, by its initial end points) and the
-    // step they appeared in.
-    std::vector<std::pair<std::array<Point<2>, 2>, unsigned int>> edges;
-    for (const auto &[s, step] : new_sides)
-      {
-        const auto e = ends(s);
-        if (std::none_of(edges.begin(), edges.end(), [&](const auto &f) {
-              return (f.first[0].distance(e[0]) < tolerance &&
-                      f.first[1].distance(e[1]) < tolerance) ||
-                     (f.first[0].distance(e[1]) < tolerance &&
-                      f.first[1].distance(e[0]) < tolerance);
-            }))
-          edges.emplace_back(e, step);
-      }
+    const std::vector<NewEdge> edges = recorder.new_edges();
     for (const auto &[e, step] : edges)
       if (step == result.first_crack_step)
         {
@@ -293,86 +194,11 @@ namespace
         }
 
     for (auto &wing : result.wings)
-      {
-        // Where the wing starts.
-        Point<2> other;
-        for (const auto &[e, step] : edges)
-          for (unsigned int i = 0; i < 2; ++i)
-            if (on_crack(e[i]) && !on_crack(e[1 - i]) &&
-                e[i].distance(wing.tip) < half &&
-                (!wing.found || step < wing.step ||
-                 (step == wing.step &&
-                  e[i].distance(wing.tip) < wing.start.distance(wing.tip))))
-              {
-                wing.found = true;
-                wing.start = e[i];
-                wing.step  = step;
-                other      = e[1 - i];
-              }
-        if (!wing.found)
-          continue;
-        wing.kink = angle_between(wing.outward, other - wing.start);
-        // The mesh edges at the start, and the two around the MTS angle.
-        for (unsigned int c = 0; c < n_cells; ++c)
-          for (unsigned int j = 0; j < 3; ++j)
-            if (corner[c][j].distance(wing.start) < tolerance)
-              for (const unsigned int o : {1u, 2u})
-                {
-                  const Point<2> &q = corner[c][(j + o) % 3];
-                  if (on_crack(q))
-                    continue; // along the pre-existing crack
-                  const double a = angle_between(wing.outward, q - wing.start);
-                  if (std::none_of(wing.edge_angles.begin(),
-                                   wing.edge_angles.end(),
-                                   [&](const double b) {
-                                     return std::abs(a - b) < 1e-6;
-                                   }))
-                    wing.edge_angles.push_back(a);
-                }
-        std::sort(wing.edge_angles.begin(), wing.edge_angles.end());
-        wing.nearest = *std::min_element(wing.edge_angles.begin(),
-                                         wing.edge_angles.end(),
-                                         [&](const double a, const double b) {
-                                           return std::abs(a - wing.mts) <
-                                                  std::abs(b - wing.mts);
-                                         });
-
-        // The wing: the new crack points nearer to this tip than to the
-        // other one (the cracks branch and leave small pieces, so they are
-        // not followed edge by edge).
-        std::vector<Point<2>> points;
-        for (const auto &[e, step] : edges)
-          for (const auto &p : e)
-            if (!on_crack(p) && !contains(points, p) &&
-                p.distance(wing.tip) < p.distance(centre + (centre - wing.tip)))
-              points.push_back(p);
-        Point<2> centroid;
-        for (const auto &p : points)
-          if (p.distance(wing.start) < 0.01)
-            {
-              centroid += p;
-              ++wing.n_points;
-            }
-        if (wing.n_points > 0)
-          wing.mean_direction =
-            angle_between(wing.outward, centroid / wing.n_points - wing.start);
-        // Where it leaves the specimen: the boundary point farthest from
-        // the tip.
-        for (const auto &p : points)
-          if ((p[0] < tolerance || p[0] > 0.1 - tolerance || p[1] < tolerance ||
-               p[1] > 0.1 - tolerance) &&
-              (!wing.exits ||
-               p.distance(wing.tip) > wing.exit.distance(wing.tip)))
-            {
-              wing.exits = true;
-              wing.exit  = p;
-            }
-        if (wing.exits)
-          {
-            const Tensor<1, 2> d = wing.exit - wing.tip;
-            wing.exit_angle      = std::atan2(d[1], d[0]) / degree;
-          }
-      }
+      trace_wing(
+        wing, edges, recorder, crack.a, crack.b, 0.01, [](const Point<2> &p) {
+          return p[0] < tolerance || p[0] > 0.1 - tolerance ||
+                 p[1] < tolerance || p[1] > 0.1 - tolerance;
+        });
     return result;
   }
 } // namespace

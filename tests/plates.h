@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Helpers of the tests of scenes whose blocks are loaded through plates
+// (the Brazilian discs): the plate force from the plate's stresses, the
+// kinetic energy of some blocks, blocks by name.
+#ifndef ndda_tests_plates_h
+#define ndda_tests_plates_h
+
+#include <ndda/fracture/fracture_criterion.h>
+#include <ndda/simulator.h>
+
+#include <algorithm>
+#include <string>
+
+#include "tests.h"
+
+namespace ndda_tests
+{
+  /**
+   * The force P through plate @p block: P = -t sum_c A_c sigma_yy,c / h,
+   * h the plate's height, on the present geometry.
+   */
+  inline double
+  plate_force(const ndda::Simulator<2> &simulator,
+              const unsigned int        block,
+              const double              thickness)
+  {
+    const auto &mesh = simulator.get_mesh().get_block_mesh();
+    double      sum = 0, y_min = 1e9, y_max = -1e9;
+    for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
+      if (mesh.cell_block[c] == block)
+        {
+          const auto &t = mesh.triangles[c];
+          const auto  a = mesh.vertices[t[1]] - mesh.vertices[t[0]];
+          const auto  b = mesh.vertices[t[2]] - mesh.vertices[t[0]];
+          sum += 0.5 * (a[0] * b[1] - a[1] * b[0]) *
+                 simulator.mean_cell_stress(c)[1][1];
+          for (const unsigned int v : t)
+            {
+              y_min = std::min(y_min, mesh.vertices[v][1]);
+              y_max = std::max(y_max, mesh.vertices[v][1]);
+            }
+        }
+    return -thickness * sum / (y_max - y_min);
+  }
+
+  /** Kinetic energy of the blocks whose name starts with @p prefix. */
+  inline double
+  kinetic_energy_of(const ndda::Simulator<2> &simulator,
+                    const std::string        &prefix)
+  {
+    const auto            &mesh  = simulator.get_mesh();
+    const auto            &names = mesh.get_block_names();
+    const auto            &v     = simulator.get_velocity();
+    dealii::Vector<double> mv(v.size());
+    simulator.get_mass_matrix().vmult(mv, v);
+    std::vector<bool>                            in(v.size(), false);
+    std::vector<dealii::types::global_dof_index> dofs;
+    for (const auto &cell : simulator.get_dof_handler().active_cell_iterators())
+      if (names[mesh.block_of_cell(cell->active_cell_index())].rfind(prefix,
+                                                                     0) == 0)
+        {
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (const auto i : dofs)
+            in[i] = true;
+        }
+    double energy = 0;
+    for (unsigned int i = 0; i < v.size(); ++i)
+      if (in[i])
+        energy += 0.5 * v[i] * mv[i];
+    return energy;
+  }
+
+  inline unsigned int
+  block_index(const ndda::Simulator<2> &simulator, const std::string &name)
+  {
+    const auto &names = simulator.get_mesh().get_block_names();
+    const auto  i     = std::find(names.begin(), names.end(), name);
+    check(i != names.end(), "block " + name + " exists");
+    return i - names.begin();
+  }
+
+  inline std::string
+  mode_name(const ndda::fracture::FailureMode mode)
+  {
+    return mode == ndda::fracture::FailureMode::tension ? "tension" :
+           mode == ndda::fracture::FailureMode::shear   ? "shear" :
+                                                          "none";
+  }
+
+  /** Crack faces near the loaded (vertical) diameter and elsewhere. */
+  struct DiameterCracks
+  {
+    unsigned int n_near = 0, n_far = 0; // faces within / beyond the band
+    double       y_low = 0, y_high = 0; // extent of those within it
+  };
+
+  /**
+   * The crack faces whose midpoints lie within @p half_width of the line
+   * x = 0, their lowest and highest midpoint (0 if none), and the number
+   * of the others.
+   */
+  inline DiameterCracks
+  diameter_cracks(const ndda::Simulator<2> &simulator, const double half_width)
+  {
+    const auto    &mesh = simulator.get_mesh().get_block_mesh();
+    DiameterCracks result;
+    for (const auto &e : mesh.crack_edges)
+      {
+        const dealii::Point<2> m =
+          0.5 * (mesh.vertices[e[0]] + mesh.vertices[e[1]]);
+        if (std::abs(m[0]) < half_width)
+          {
+            ++result.n_near;
+            result.y_low  = std::min(result.y_low, m[1]);
+            result.y_high = std::max(result.y_high, m[1]);
+          }
+        else
+          ++result.n_far;
+      }
+    return result;
+  }
+} // namespace ndda_tests
+
+#endif
