@@ -1,0 +1,257 @@
+"""Readers for the files an ndda run writes into its output directory.
+
+Used by plot_frames.py and plot_history.py (import it from the same
+folder); needs only the Python standard library and numpy. Run it with
+Debian's /usr/bin/python3 (python3-numpy).
+
+- read_pvd(path): the (time, file) pairs of a ParaView collection
+  (solution.pvd).
+- read_vtu(path): a VTK XML UnstructuredGrid file as deal.II 9.4 writes it
+  (format="binary": base64, zlib-compressed in blocks with a UInt32 or
+  UInt64 header, or uncompressed; format="ascii" also works). Returns the
+  points, the cells (connectivity, offsets, types) and every PointData and
+  CellData array by name, as numpy arrays.
+- read_table(path): ndda's column files: 'statistics' (a '# N: Name' line
+  per column, then one row per step) and 'measure_points.txt' (one header
+  line '# time  [point 0 at x y: u_x u_y ...]  [point 1 ...]', then one row
+  per step). Returns an ordered dict column name -> numpy array; measure
+  point columns are named as in the file's header, 'point 0 sigma_xx'
+  etc.
+
+Every error names the file and what is wrong with it.
+"""
+
+import base64
+import collections
+import os
+import re
+import xml.etree.ElementTree as ET
+import zlib
+
+import numpy as np
+
+
+class OutputError(Exception):
+    """A file of an ndda output directory that cannot be read."""
+
+
+_VTK_TYPES = {
+    "Int8": np.int8,
+    "UInt8": np.uint8,
+    "Int16": np.int16,
+    "UInt16": np.uint16,
+    "Int32": np.int32,
+    "UInt32": np.uint32,
+    "Int64": np.int64,
+    "UInt64": np.uint64,
+    "Float32": np.float32,
+    "Float64": np.float64,
+}
+
+
+def read_pvd(path):
+    """Return a list of (time in s, absolute path of the data file)."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError) as error:
+        raise OutputError(f"{path}: cannot read the ParaView collection: {error}")
+    frames = []
+    for data_set in root.iter("DataSet"):
+        try:
+            time = float(data_set.get("timestep"))
+            name = data_set.get("file")
+        except (TypeError, ValueError):
+            raise OutputError(
+                f"{path}: a DataSet entry without a numeric 'timestep' and a 'file'"
+            )
+        frames.append((time, os.path.join(os.path.dirname(os.path.abspath(path)), name)))
+    if not frames:
+        raise OutputError(f"{path}: no DataSet entries (no frames written?)")
+    frames.sort(key=lambda frame: frame[0])
+    return frames
+
+
+def _decode_binary(text, dtype, header_dtype, compressed, where):
+    """Decode one format="binary" DataArray of a VTK XML file.
+
+    deal.II base64-encodes the header and the data separately and writes
+    the two strings one after the other; VTK itself may encode them
+    together. Both are accepted.
+    """
+    text = "".join(text.split())
+    header_size = np.dtype(header_dtype).itemsize
+
+    def b64_length(n_bytes):
+        return 4 * ((n_bytes + 2) // 3)
+
+    try:
+        if not compressed:
+            # One header word (number of bytes), then the data.
+            first = base64.b64decode(text[: b64_length(header_size)])
+            n_bytes = int(np.frombuffer(first[:header_size], header_dtype)[0])
+            rest = text[b64_length(header_size) :]
+            data = base64.b64decode(rest) if rest else b""
+            if len(data) != n_bytes:
+                # Header and data encoded together.
+                data = base64.b64decode(text)[header_size : header_size + n_bytes]
+            return np.frombuffer(data, dtype)
+        # Compressed: [n_blocks, block_size, last_block_size, sizes...].
+        first = base64.b64decode(text[: b64_length(3 * header_size)])
+        n_blocks = int(np.frombuffer(first[:header_size], header_dtype)[0])
+        header_bytes = (3 + n_blocks) * header_size
+        header_text = text[: b64_length(header_bytes)]
+        header = np.frombuffer(
+            base64.b64decode(header_text)[:header_bytes], header_dtype
+        ).astype(np.int64)
+        sizes = header[3:]
+        payload_text = text[len(header_text) :]
+        payload = base64.b64decode(payload_text) if payload_text else b""
+        if len(payload) != int(sizes.sum()):
+            payload = base64.b64decode(text)[header_bytes:]
+        chunks = []
+        position = 0
+        for size in sizes:
+            chunks.append(zlib.decompress(payload[position : position + size]))
+            position += size
+        return np.frombuffer(b"".join(chunks), dtype)
+    except (ValueError, zlib.error, IndexError) as error:
+        raise OutputError(f"{where}: cannot decode the binary data: {error}")
+
+
+def _read_data_array(element, compressed, header_dtype, path):
+    name = element.get("Name", "(unnamed)")
+    where = f"{path}, DataArray '{name}'"
+    type_name = element.get("type")
+    if type_name not in _VTK_TYPES:
+        raise OutputError(f"{where}: unknown type '{type_name}'")
+    dtype = np.dtype(_VTK_TYPES[type_name]).newbyteorder("<")
+    n_components = int(element.get("NumberOfComponents", "1"))
+    data_format = element.get("format", "ascii")
+    text = element.text or ""
+    if data_format == "ascii":
+        values = np.array(text.split(), dtype=dtype)
+    elif data_format == "binary":
+        values = _decode_binary(text, dtype, header_dtype, compressed, where)
+    else:
+        raise OutputError(
+            f"{where}: format '{data_format}' is not supported (ascii or binary)"
+        )
+    if n_components > 1:
+        if values.size % n_components:
+            raise OutputError(
+                f"{where}: {values.size} values are not a multiple of "
+                f"{n_components} components"
+            )
+        values = values.reshape(-1, n_components)
+    return values
+
+
+VtuData = collections.namedtuple(
+    "VtuData", "points connectivity offsets types point_data cell_data"
+)
+
+
+def read_vtu(path):
+    """Read a VTK XML UnstructuredGrid (.vtu) file with one piece."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError) as error:
+        raise OutputError(f"{path}: cannot read the VTU file: {error}")
+    if root.get("type") != "UnstructuredGrid":
+        raise OutputError(f"{path}: not an UnstructuredGrid VTK file")
+    if root.get("byte_order", root.get("ByteOrder", "LittleEndian")) != "LittleEndian":
+        raise OutputError(f"{path}: big-endian VTU files are not supported")
+    compressor = root.get("compressor", "")
+    if compressor not in ("", "vtkZLibDataCompressor"):
+        raise OutputError(f"{path}: compressor '{compressor}' is not supported")
+    header_dtype = np.dtype(_VTK_TYPES[root.get("header_type", "UInt32")]).newbyteorder("<")
+    pieces = root.findall("./UnstructuredGrid/Piece")
+    if len(pieces) != 1:
+        raise OutputError(f"{path}: {len(pieces)} pieces; one is expected")
+    piece = pieces[0]
+
+    def arrays(tag):
+        section = piece.find(tag)
+        result = collections.OrderedDict()
+        if section is not None:
+            for element in section.findall("DataArray"):
+                result[element.get("Name")] = _read_data_array(
+                    element, bool(compressor), header_dtype, path
+                )
+        return result
+
+    points_element = piece.find("./Points/DataArray")
+    if points_element is None:
+        raise OutputError(f"{path}: no Points")
+    points = _read_data_array(points_element, bool(compressor), header_dtype, path)
+    cells = arrays("Cells")
+    for name in ("connectivity", "offsets", "types"):
+        if name not in cells:
+            raise OutputError(f"{path}: no Cells array '{name}'")
+    n_points = int(piece.get("NumberOfPoints"))
+    n_cells = int(piece.get("NumberOfCells"))
+    if len(points) != n_points or len(cells["offsets"]) != n_cells:
+        raise OutputError(
+            f"{path}: {len(points)} points and {len(cells['offsets'])} cells "
+            f"read, the Piece says {n_points} and {n_cells}"
+        )
+    return VtuData(
+        points=points.astype(np.float64),
+        connectivity=cells["connectivity"].astype(np.int64),
+        offsets=cells["offsets"].astype(np.int64),
+        types=cells["types"].astype(np.int64),
+        point_data=arrays("PointData"),
+        cell_data=arrays("CellData"),
+    )
+
+
+_POINT_GROUP = re.compile(r"\[point\s+(\d+)\s+at\s+[^:]*:\s*([^\]]*)\]")
+
+
+def _column_names(path, comment_lines):
+    """Column names from the comment lines at the top of an ndda table."""
+    numbered = {}
+    for line in comment_lines:
+        match = re.match(r"#\s*(\d+):\s*(.*\S)", line)
+        if match:
+            numbered[int(match.group(1))] = match.group(2)
+    if numbered:
+        return [numbered[i] for i in sorted(numbered)]
+    for line in comment_lines:
+        groups = _POINT_GROUP.findall(line)
+        if groups:
+            names = [line.lstrip("#").split()[0]]
+            for index, quantities in groups:
+                names += [f"point {index} {q}" for q in quantities.split()]
+            return names
+    raise OutputError(
+        f"{path}: no column names found (expected '# N: Name' lines or "
+        f"a '# time [point 0 at x y: ...]' line)"
+    )
+
+
+def read_table(path):
+    """Read ndda's 'statistics' or 'measure_points.txt'."""
+    try:
+        with open(path) as stream:
+            lines = stream.read().splitlines()
+    except OSError as error:
+        raise OutputError(f"{path}: cannot read: {error}")
+    comments = [line for line in lines if line.startswith("#")]
+    names = _column_names(path, comments)
+    rows = []
+    for number, line in enumerate(lines, start=1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        try:
+            row = [float(word) for word in line.split()]
+        except ValueError:
+            raise OutputError(f"{path}, line {number}: not a row of numbers")
+        if len(row) != len(names):
+            raise OutputError(
+                f"{path}, line {number}: {len(row)} values, the header names "
+                f"{len(names)} columns"
+            )
+        rows.append(row)
+    data = np.array(rows, dtype=float).reshape(-1, len(names))
+    return collections.OrderedDict((name, data[:, i]) for i, name in enumerate(names))
