@@ -1,0 +1,530 @@
+#!/usr/bin/python3
+"""Draw PNG frames of an ndda run: cells coloured by stress, blocks outlined,
+cracks marked.
+
+Reads an ndda output directory (output/<scene name>/ or the scene's
+Output/Directory): solution.pvd and the solution-NNNNN.vtu files it lists
+(VTK XML, base64 + zlib, one vertex per cell corner, read with
+ndda_output.py: xml.etree, base64, zlib and numpy only), the 'statistics'
+file for the 'Cracked edges' column if there is one, and parameters.prm
+for the scene name. Writes one PNG per chosen frame, PREFIX_NNNNN.png
+(NNNNN the frame's number in solution.pvd) or, with --auto,
+PREFIX_start.png, PREFIX_first_crack.png, PREFIX_propagation.png and
+PREFIX_end.png.
+
+Run it with Debian's Python (python3-numpy, python3-matplotlib):
+
+    /usr/bin/python3 scripts/plot_frames.py output/brazilian_disc --auto --out /tmp/disc
+    /usr/bin/python3 scripts/plot_frames.py output/bar_spalling --times 0.26ms,0.4ms \
+        --field stress_xx --xlim 900,1000 --out /tmp/bar
+
+What a frame shows:
+- Cells coloured by --field (default 'principal': at each point the
+  principal stress of the larger magnitude, signed, so compression is blue
+  and tension red whichever of the two it is), in MPa, with a diverging
+  colour map and symmetric limits. The limits are the same for every frame
+  of the scene: the largest over all frames of the --percentile of |value|
+  (default 95 %, so that the stress peaks at point contacts, a few cells
+  with ten times the stress of the rest, do not wash out the picture;
+  values beyond are drawn in the end colours and the colour bar has
+  pointed ends), or --limit. Stress fields are constant in a P1
+  cell and drawn flat; fields that vary in a cell are drawn with Gouraud
+  shading.
+- Block outlines in black: the edges that belong to one triangle of a
+  block only. ndda writes every cell with its own three vertices, so edges
+  are matched by their end points' exact float32 coordinates (and the
+  block id): the vertices of an unbroken mesh are written bit for bit the
+  same by every cell that shares them, while the two copies of a vertex
+  split by a crack move apart.
+- Cracks in green: the outline edges of a frame that were not outline
+  edges in the first frame. They are matched by their midpoints in the
+  reference configuration (position minus displacement, the same on both
+  faces of a crack), within a tenth of the median outline edge length;
+  this survives large motions of the blocks. Limit: a crack whose faces
+  still touch to the last bit of float32 (usually the first step or two
+  after it forms, or a closed crack under compression) cannot be told from
+  unbroken material in the VTU file; the subtitle gives the statistics
+  file's 'Cracked edges' count so that such cracks are not missed.
+
+--auto picks the first frame, the first frame with a crack (the first
+output at or after the first step with 'Cracked edges' > 0 in the
+statistics file; without that column, the first frame whose outline has
+new edges), the frame of the propagation whose crack count is closest to
+halfway between that first crack and the end, and the last frame. A scene
+without cracks gets the first, middle and last frames.
+"""
+
+import argparse
+import os
+import re
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ndda_output  # noqa: E402
+
+# VTK cell types whose first three vertices are a triangle's corners:
+# triangle, quadratic triangle, Lagrange triangle.
+TRIANGLE_TYPES = (5, 22, 69)
+
+PRINCIPAL = "principal"
+CRACK_COLOUR = "#00a000"
+
+
+# ----------------------------------------------------------------- frames
+class Frame:
+    """One VTU file reduced to what a picture needs."""
+
+    def __init__(self, path, time, field):
+        data = ndda_output.read_vtu(path)
+        self.path = path
+        self.time = time
+        self.triangles = triangle_corners(data, path)
+        self.xy = data.points[:, :2]
+        self.values, self.label, self.scale, self.diverging = field_values(
+            data, field, path
+        )
+        self.block = block_ids(data, len(self.xy))
+        displacement = data.point_data.get("displacement")
+        self.reference = (
+            self.xy - displacement[:, :2] if displacement is not None else self.xy
+        )
+        self.outline = outline_edges(data.points, self.triangles, self.block)
+
+
+def triangle_corners(data, path):
+    """Corner point indices (n_triangles x 3) of the triangular cells."""
+    starts = np.concatenate(([0], data.offsets[:-1]))
+    keep = np.isin(data.types, TRIANGLE_TYPES)
+    if not keep.any():
+        raise ndda_output.OutputError(
+            f"{path}: no triangular cells (VTK types {sorted(set(data.types))})"
+        )
+    starts = starts[keep]
+    return np.stack([data.connectivity[starts + i] for i in range(3)], axis=1)
+
+
+def block_ids(data, n_points):
+    if "block_id" in data.point_data:
+        return np.rint(data.point_data["block_id"]).astype(np.int64)
+    return np.zeros(n_points, dtype=np.int64)
+
+
+def field_values(data, field, path):
+    """Point values of a field: (values, colour bar label, scale, diverging)."""
+    fields = dict(data.point_data)
+    if field == PRINCIPAL:
+        for name in ("principal_stress_1", "principal_stress_2"):
+            if name not in fields:
+                raise ndda_output.OutputError(
+                    f"{path}: no point field '{name}' for --field {PRINCIPAL}"
+                )
+        s1 = fields["principal_stress_1"].astype(float)
+        s2 = fields["principal_stress_2"].astype(float)
+        values = np.where(np.abs(s1) >= np.abs(s2), s1, s2)
+        return (
+            values * 1e-6,
+            "principal stress of larger magnitude (MPa)",
+            1e-6,
+            True,
+        )
+    if field not in fields:
+        if field in data.cell_data:
+            raise ndda_output.OutputError(
+                f"{path}: '{field}' is cell data; only point fields are drawn"
+            )
+        raise ndda_output.OutputError(
+            f"{path}: no point field '{field}'; there are: "
+            + ", ".join([PRINCIPAL] + list(fields))
+        )
+    values = fields[field].astype(float)
+    if values.ndim == 2:
+        values = np.linalg.norm(values, axis=1)
+        name = f"|{field}|"
+    else:
+        name = field
+    if "stress" in field:
+        return values * 1e-6, f"{name} (MPa)", 1e-6, True
+    if field == "displacement":
+        return values * 1e3, f"{name} (mm)", 1e3, False
+    if field == "velocity":
+        return values, f"{name} (m/s)", 1.0, False
+    return values, name, 1.0, False
+
+
+def vertex_keys(points, block):
+    """One integer id per distinct (block, float32 x, float32 y)."""
+    bits = points[:, :2].astype(np.float32).view(np.uint32).astype(np.int64)
+    rows = np.column_stack((block, bits))
+    _, ids = np.unique(rows, axis=0, return_inverse=True)
+    return ids.reshape(-1)
+
+
+def outline_edges(points, triangles, block):
+    """Point index pairs of the edges that belong to one triangle only."""
+    ids = vertex_keys(points, block)
+    local = np.concatenate(
+        [triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]
+    )
+    keys = np.sort(ids[local], axis=1)
+    _, inverse, counts = np.unique(
+        keys, axis=0, return_inverse=True, return_counts=True
+    )
+    return local[counts[inverse.reshape(-1)] == 1]
+
+
+class EdgeSet:
+    """Midpoints of edges in the reference configuration, found again by
+    position within a tolerance (a hash grid of cells of that size)."""
+
+    def __init__(self, frame, tolerance):
+        self.tolerance = tolerance
+        self.cells = set()
+        for i, j in self._bins(frame, frame.outline):
+            for di in (-1, 0, 1):
+                for dj in (-1, 0, 1):
+                    self.cells.add((i + di, j + dj))
+
+    def _bins(self, frame, edges):
+        middle = 0.5 * (frame.reference[edges[:, 0]] + frame.reference[edges[:, 1]])
+        return [tuple(b) for b in np.floor(middle / self.tolerance).astype(np.int64)]
+
+    def new_edges(self, frame):
+        """The outline edges of frame that are not in this set."""
+        is_new = [b not in self.cells for b in self._bins(frame, frame.outline)]
+        return frame.outline[np.array(is_new, dtype=bool)]
+
+
+# ---------------------------------------------------------- run metadata
+def scene_name(directory):
+    """'Scene name' from the run's parameters.prm, else the folder's name."""
+    path = os.path.join(directory, "parameters.prm")
+    try:
+        with open(path) as stream:
+            for line in stream:
+                match = re.match(r"\s*set\s+Scene name\s*=\s*([^#\s]+)", line)
+                if match:
+                    return match.group(1)
+    except OSError:
+        pass
+    return os.path.basename(os.path.normpath(directory))
+
+
+def cracked_edges(directory):
+    """(times, 'Cracked edges') from the statistics file, or None."""
+    path = os.path.join(directory, "statistics")
+    if not os.path.exists(path):
+        return None
+    table = ndda_output.read_table(path)
+    if "Cracked edges" not in table or "Time (s)" not in table:
+        return None
+    return table["Time (s)"], table["Cracked edges"]
+
+
+def count_at(history, time):
+    """The statistics' count at the last step at or before time."""
+    times, counts = history
+    index = np.searchsorted(times, time * (1 + 1e-9) + 1e-15, side="right") - 1
+    return int(counts[index]) if index >= 0 else 0
+
+
+# ------------------------------------------------------------- selection
+def parse_time(text):
+    """'2.1e-3' (seconds), '2.1ms' or '210us' -> seconds."""
+    match = re.fullmatch(r"\s*([-+0-9.eE]+)\s*(s|ms|us|µs)?\s*", text)
+    factor = {None: 1.0, "s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6}
+    try:
+        return float(match.group(1)) * factor[match.group(2)]
+    except (AttributeError, ValueError):
+        raise argparse.ArgumentTypeError(
+            f"--times: '{text}' is not a time (e.g. 2.1e-3, 2.1ms, 210us)"
+        )
+
+
+def closest_frame(frames, time):
+    return int(np.argmin([abs(t - time) for t, _ in frames]))
+
+
+def auto_selection(frames, history, outline_growth):
+    """[(label, frame index)] for --auto."""
+    last = len(frames) - 1
+    times = np.array([t for t, _ in frames])
+    if history is not None:
+        counts = np.array([count_at(history, t) for t in times])
+    else:
+        counts = outline_growth()
+    cracked = np.nonzero(counts > 0)[0]
+    if len(cracked) == 0:
+        print("plot_frames: no crack in this run; --auto draws start, middle, end")
+        return [("start", 0), ("middle", last // 2), ("end", last)]
+    first = int(cracked[0])
+    halfway = 0.5 * (counts[first] + counts[last])
+    later = np.arange(first, last + 1)
+    middle = int(later[np.argmin(np.abs(counts[later] - halfway))])
+    return [("start", 0), ("first_crack", first), ("propagation", middle), ("end", last)]
+
+
+# --------------------------------------------------------------- drawing
+def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection
+    from matplotlib.tri import Triangulation
+
+    x, y = frame.xy[:, 0] * 1e3, frame.xy[:, 1] * 1e3
+    (x0, x1), (y0, y1) = box
+    width, height = x1 - x0, y1 - y0
+    wide = width > 1.6 * height
+    # Room for the title, the axis labels and the colour bar (inches),
+    # and the share of the width the plot gets beside a vertical bar.
+    if wide:
+        plot_width, extra = 0.85 * args.size, 1.6
+    else:
+        plot_width, extra = 0.72 * args.size, 1.2
+    fig_height = min(1.4 * args.size, plot_width * height / width + extra)
+    figure, axes = plt.subplots(
+        figsize=(args.size, fig_height), dpi=args.dpi, layout="constrained"
+    )
+
+    triangulation = Triangulation(x, y, frame.triangles)
+    cell_values = frame.values[frame.triangles]
+    vmin, vmax = limits
+    cmap = plt.get_cmap(
+        args.cmap if frame.diverging else "viridis", args.levels or None
+    )
+    span = np.ptp(cell_values, axis=1)
+    if np.all(span <= 1e-6 * max(abs(vmin), abs(vmax), 1e-30)):
+        mesh = axes.tripcolor(
+            triangulation,
+            facecolors=cell_values[:, 0],
+            cmap=cmap,
+            vmin=vmin,
+            vmax=vmax,
+            edgecolors="none",
+            antialiased=False,  # no light seams between the cells
+        )
+    else:
+        mesh = axes.tripcolor(
+            triangulation, frame.values, shading="gouraud", cmap=cmap, vmin=vmin, vmax=vmax
+        )
+    if args.mesh:
+        axes.triplot(triangulation, color="0.6", linewidth=0.2)
+
+    def segments(edges):
+        return np.stack((frame.xy[edges[:, 0]], frame.xy[edges[:, 1]]), axis=1) * 1e3
+
+    axes.add_collection(
+        LineCollection(
+            segments(frame.outline), colors="black", linewidths=1.0, zorder=3
+        )
+    )
+    if len(new_edges):
+        axes.add_collection(
+            LineCollection(
+                segments(new_edges), colors=CRACK_COLOUR, linewidths=1.6, zorder=4
+            )
+        )
+
+    axes.set_aspect("equal")
+    axes.set_xlim(x0, x1)
+    axes.set_ylim(y0, y1)
+    axes.set_xlabel("x (mm)")
+    axes.set_ylabel("y (mm)")
+    title = f"{scene}, t = {frame.time * 1e3:.4g} ms"
+    if n_cracked is not None:
+        title += f", {n_cracked} cracked edges"
+    if len(new_edges):
+        title += "\nblack: block outlines, green: crack faces"
+    axes.set_title(title, fontsize=10)
+    low, high = np.min(frame.values), np.max(frame.values)
+    extend = {(False, False): "neither", (True, False): "min", (False, True): "max"}
+    bar = figure.colorbar(
+        mesh,
+        ax=axes,
+        orientation="horizontal" if wide else "vertical",
+        fraction=0.08 if wide else 0.05,
+        aspect=40 if wide else 25,
+        extend=extend.get((low < vmin, high > vmax), "both"),
+    )
+    bar.set_label(frame.label)
+    save_png(figure, path, args)
+    plt.close(figure)
+
+
+def save_png(figure, path, args):
+    """Save the figure; as an 8-bit palette PNG unless --full-colour
+    (a third of the size; with --levels colours the cells lose nothing)."""
+    try:
+        from PIL import Image
+    except ImportError:
+        Image = None
+    if args.full_colour or Image is None:
+        figure.savefig(path, dpi=args.dpi)
+        return
+    figure.canvas.draw()
+    image = Image.frombuffer(
+        "RGBA", figure.canvas.get_width_height(), figure.canvas.buffer_rgba()
+    ).convert("RGB")
+    image = image.quantize(
+        colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE
+    )
+    image.save(path, optimize=True, dpi=(args.dpi, args.dpi))
+
+
+def bounding_box(frames, args):
+    """Axis limits in mm: --xlim/--ylim, else all frames' points plus a
+    margin (3 % of the geometric mean of the two extents)."""
+    lows = np.min([f.xy.min(axis=0) for f in frames], axis=0) * 1e3
+    highs = np.max([f.xy.max(axis=0) for f in frames], axis=0) * 1e3
+    given = (args.xlim, args.ylim)
+    box = [given[i] if given[i] is not None else (lows[i], highs[i]) for i in range(2)]
+    extents = [high - low for low, high in box]
+    margin = 0.03 * np.sqrt(max(extents[0], 1e-9) * max(extents[1], 1e-9))
+    for i in range(2):
+        if given[i] is None:
+            box[i] = (box[i][0] - margin, box[i][1] + margin)
+    return box
+
+
+def parse_range(text):
+    try:
+        low, high = (float(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not 'low,high' in mm")
+    if not low < high:
+        raise argparse.ArgumentTypeError(f"'{text}': low must be below high")
+    return (low, high)
+
+
+def main():
+    parser = argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0],
+        epilog="See the top of this file for what the pictures show.",
+    )
+    parser.add_argument("directory", help="ndda output directory (holds solution.pvd)")
+    choice = parser.add_mutually_exclusive_group(required=True)
+    choice.add_argument(
+        "--times",
+        help="comma-separated times; the frame closest to each is drawn "
+        "(seconds, or with a unit: 2.1ms, 210us)",
+    )
+    choice.add_argument(
+        "--auto",
+        action="store_true",
+        help="draw the start, the first crack, the propagation and the end",
+    )
+    parser.add_argument(
+        "--out", required=True, help="prefix of the PNG files (PREFIX_....png)"
+    )
+    parser.add_argument(
+        "--field",
+        default=PRINCIPAL,
+        help="point field to colour the cells by: 'principal' (default: the "
+        "principal stress of larger magnitude), stress_xx, stress_yy, "
+        "stress_xy, principal_stress_1, principal_stress_2, or a vector "
+        "field (displacement, velocity: its magnitude)",
+    )
+    parser.add_argument(
+        "--limit",
+        type=float,
+        help="colour scale limit in the field's unit (MPa for stresses): "
+        "-LIMIT..LIMIT; default from --percentile over all frames",
+    )
+    parser.add_argument(
+        "--percentile",
+        type=float,
+        default=95.0,
+        help="percentile of |value| per frame whose largest value over all "
+        "frames sets the colour scale (default 95)",
+    )
+    parser.add_argument("--xlim", type=parse_range, help="x range in mm: low,high")
+    parser.add_argument("--ylim", type=parse_range, help="y range in mm: low,high")
+    parser.add_argument(
+        "--mesh", action="store_true", help="also draw the cells' edges in grey"
+    )
+    parser.add_argument(
+        "--cmap", default="RdBu_r", help="diverging colour map (default RdBu_r)"
+    )
+    parser.add_argument(
+        "--levels",
+        type=int,
+        default=21,
+        help="number of colours of the colour map (default 21: bands easy "
+        "to read off, an odd number so that zero is white; 0: continuous)",
+    )
+    parser.add_argument(
+        "--full-colour",
+        action="store_true",
+        help="write 24-bit PNGs (default: 8-bit palette, a third of the size)",
+    )
+    parser.add_argument("--dpi", type=int, default=120, help="resolution (default 120)")
+    parser.add_argument(
+        "--size", type=float, default=6.0, help="figure width in inches (default 6)"
+    )
+    args = parser.parse_args()
+    if not 0 < args.percentile <= 100:
+        parser.error(f"--percentile {args.percentile}: must be in (0, 100]")
+
+    try:
+        pvd = os.path.join(args.directory, "solution.pvd")
+        files = ndda_output.read_pvd(pvd)
+        history = cracked_edges(args.directory)
+        scene = scene_name(args.directory)
+
+        # Every frame is read once: the colour scale and the axis limits
+        # are the same for all pictures of a scene.
+        frames = [Frame(path, time, args.field) for time, path in files]
+        reference = EdgeSet(frames[0], 0.1 * median_edge_length(frames[0]))
+        new_edges = [reference.new_edges(frame) for frame in frames]
+
+        if args.auto:
+            chosen = auto_selection(
+                files, history, lambda: np.array([len(e) for e in new_edges])
+            )
+        else:
+            chosen = []
+            for text in args.times.split(","):
+                index = closest_frame(files, parse_time(text))
+                chosen.append((f"{index:05d}", index))
+
+        limits = colour_limits(frames, args)
+        box = bounding_box(frames, args)
+        for label, index in chosen:
+            frame = frames[index]
+            path = f"{args.out}_{label}.png"
+            n_cracked = count_at(history, frame.time) if history is not None else None
+            draw(frame, args, scene, limits, box, new_edges[index], n_cracked, path)
+            print(f"{path}: t = {frame.time * 1e3:.6g} ms ({os.path.basename(frame.path)})")
+    except ndda_output.OutputError as error:
+        sys.exit(f"plot_frames: {error}")
+    except argparse.ArgumentTypeError as error:
+        parser.error(str(error))
+
+
+def median_edge_length(frame):
+    edges = frame.outline
+    lengths = np.linalg.norm(
+        frame.reference[edges[:, 0]] - frame.reference[edges[:, 1]], axis=1
+    )
+    return float(np.median(lengths))
+
+
+def colour_limits(frames, args):
+    if frames[0].diverging:
+        if args.limit is not None:
+            return (-abs(args.limit), abs(args.limit))
+        limit = max(np.percentile(np.abs(f.values), args.percentile) for f in frames)
+        limit = limit if limit > 0 else 1.0
+        return (-limit, limit)
+    low = min(f.values.min() for f in frames)
+    high = max(f.values.max() for f in frames)
+    if args.limit is not None:
+        high = args.limit
+    return (low, high if high > low else low + 1.0)
+
+
+if __name__ == "__main__":
+    main()
