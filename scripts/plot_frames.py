@@ -277,18 +277,7 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
     x, y = frame.xy[:, 0] * 1e3, frame.xy[:, 1] * 1e3
     (x0, x1), (y0, y1) = box
     width, height = x1 - x0, y1 - y0
-    wide = width > 1.6 * height
-    # Room for the title, the axis labels and the colour bar (inches),
-    # and the share of the width the plot gets beside a vertical bar.
-    if wide:
-        plot_width, extra = 0.85 * args.size, 1.6
-    else:
-        plot_width, extra = 0.72 * args.size, 1.2
-    fig_height = min(1.4 * args.size, plot_width * height / width + extra)
-    figure, axes = plt.subplots(
-        figsize=(args.size, fig_height), dpi=args.dpi, layout="constrained"
-    )
-
+    figure, axes, bar_axes, wide = layout(plt, width, height, args)
     triangulation = Triangulation(x, y, frame.triangles)
     cell_values = frame.values[frame.triangles]
     vmin, vmax = limits
@@ -343,15 +332,49 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
     extend = {(False, False): "neither", (True, False): "min", (False, True): "max"}
     bar = figure.colorbar(
         mesh,
-        ax=axes,
+        cax=bar_axes,
         orientation="horizontal" if wide else "vertical",
-        fraction=0.08 if wide else 0.05,
-        aspect=40 if wide else 25,
         extend=extend.get((low < vmin, high > vmax), "both"),
     )
     bar.set_label(frame.label)
     save_png(figure, path, args)
     plt.close(figure)
+
+
+def layout(plt, width, height, args):
+    """A figure --size inches wide whose plot has equal scales for a
+    width x height (mm) box, the colour bar beside it (below it for a wide
+    box), fixed margins in inches for the labels. Returns the figure, the
+    plot's and the colour bar's axes, and whether the bar is below."""
+    wide = width > 1.6 * height
+    left, right, top = 0.85, 0.25, 0.55
+    bottom = 1.1 if wide else 0.55
+    if not wide:
+        right += 1.05  # the bar and its label
+    plot_width = args.size - left - right
+    plot_height = plot_width * height / width
+    highest = 1.4 * args.size - top - bottom
+    if plot_height > highest:
+        plot_width, plot_height = highest * width / height, highest
+    figure_height = bottom + plot_height + top
+    figure = plt.figure(figsize=(args.size, figure_height), dpi=args.dpi)
+    # Centre a plot narrower than its room (a tall box).
+    left += 0.5 * (args.size - left - right - plot_width)
+
+    def box(x, y, w, h):
+        return [x / args.size, y / figure_height, w / args.size, h / figure_height]
+
+    axes = figure.add_axes(box(left, bottom, plot_width, plot_height))
+    if wide:
+        bar_width = 0.8 * plot_width
+        bar_axes = figure.add_axes(
+            box(left + 0.1 * plot_width, 0.42, bar_width, 0.14)
+        )
+    else:
+        bar_axes = figure.add_axes(
+            box(left + plot_width + 0.2, bottom, 0.16, plot_height)
+        )
+    return figure, axes, bar_axes, wide
 
 
 def save_png(figure, path, args):
