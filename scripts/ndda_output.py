@@ -16,7 +16,9 @@ Debian's /usr/bin/python3 (python3-numpy).
   line '# time  [point 0 at x y: u_x u_y ...]  [point 1 ...]', then one row
   per step). Returns an ordered dict column name -> numpy array; measure
   point columns are named as in the file's header, 'point 0 sigma_xx'
-  etc.
+  etc.; measure_point_positions(path) gives each point's (x, y).
+- scene_name(directory): 'Scene name' from the run's parameters.prm.
+- parse_time(text): '2.1e-3' (s), '2.1ms' or '210us' in seconds.
 
 Every error names the file and what is wrong with it.
 """
@@ -205,7 +207,7 @@ def read_vtu(path):
     )
 
 
-_POINT_GROUP = re.compile(r"\[point\s+(\d+)\s+at\s+[^:]*:\s*([^\]]*)\]")
+_POINT_GROUP = re.compile(r"\[point\s+(\d+)\s+at\s+([^:]*):\s*([^\]]*)\]")
 
 
 def _column_names(path, comment_lines):
@@ -221,7 +223,7 @@ def _column_names(path, comment_lines):
         groups = _POINT_GROUP.findall(line)
         if groups:
             names = [line.lstrip("#").split()[0]]
-            for index, quantities in groups:
+            for index, _, quantities in groups:
                 names += [f"point {index} {q}" for q in quantities.split()]
             return names
     raise OutputError(
@@ -255,3 +257,43 @@ def read_table(path):
         rows.append(row)
     data = np.array(rows, dtype=float).reshape(-1, len(names))
     return collections.OrderedDict((name, data[:, i]) for i, name in enumerate(names))
+
+
+def measure_point_positions(path):
+    """{index: (x, y) in m} from the header of measure_points.txt."""
+    try:
+        with open(path) as stream:
+            header = stream.readline()
+    except OSError as error:
+        raise OutputError(f"{path}: cannot read: {error}")
+    positions = {}
+    for index, where, _ in _POINT_GROUP.findall(header):
+        try:
+            positions[int(index)] = tuple(float(v) for v in where.split()[:2])
+        except ValueError:
+            raise OutputError(f"{path}: point {index} has no position 'x y'")
+    return positions
+
+
+def scene_name(directory):
+    """'Scene name' from the run's parameters.prm, else the folder's name."""
+    path = os.path.join(directory, "parameters.prm")
+    try:
+        with open(path) as stream:
+            for line in stream:
+                match = re.match(r"\s*set\s+Scene name\s*=\s*([^#\s]+)", line)
+                if match:
+                    return match.group(1)
+    except OSError:
+        pass
+    return os.path.basename(os.path.normpath(directory))
+
+
+def parse_time(text):
+    """'2.1e-3' (seconds), '2.1ms' or '210us' -> seconds."""
+    match = re.fullmatch(r"\s*([-+0-9.eE]+)\s*(s|ms|us|µs)?\s*", text)
+    factor = {None: 1.0, "s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6}
+    try:
+        return float(match.group(1)) * factor[match.group(2)]
+    except (AttributeError, ValueError):
+        raise ValueError(f"'{text}' is not a time (e.g. 2.1e-3, 2.1ms, 210us)")

@@ -56,7 +56,6 @@ without cracks gets the first, middle and last frames.
 
 import argparse
 import os
-import re
 import sys
 
 import numpy as np
@@ -197,20 +196,6 @@ class EdgeSet:
 
 
 # ---------------------------------------------------------- run metadata
-def scene_name(directory):
-    """'Scene name' from the run's parameters.prm, else the folder's name."""
-    path = os.path.join(directory, "parameters.prm")
-    try:
-        with open(path) as stream:
-            for line in stream:
-                match = re.match(r"\s*set\s+Scene name\s*=\s*([^#\s]+)", line)
-                if match:
-                    return match.group(1)
-    except OSError:
-        pass
-    return os.path.basename(os.path.normpath(directory))
-
-
 def cracked_edges(directory):
     """(times, 'Cracked edges') from the statistics file, or None."""
     path = os.path.join(directory, "statistics")
@@ -230,18 +215,6 @@ def count_at(history, time):
 
 
 # ------------------------------------------------------------- selection
-def parse_time(text):
-    """'2.1e-3' (seconds), '2.1ms' or '210us' -> seconds."""
-    match = re.fullmatch(r"\s*([-+0-9.eE]+)\s*(s|ms|us|µs)?\s*", text)
-    factor = {None: 1.0, "s": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6}
-    try:
-        return float(match.group(1)) * factor[match.group(2)]
-    except (AttributeError, ValueError):
-        raise argparse.ArgumentTypeError(
-            f"--times: '{text}' is not a time (e.g. 2.1e-3, 2.1ms, 210us)"
-        )
-
-
 def closest_frame(frames, time):
     return int(np.argmin([abs(t - time) for t, _ in frames]))
 
@@ -490,12 +463,16 @@ def main():
     args = parser.parse_args()
     if not 0 < args.percentile <= 100:
         parser.error(f"--percentile {args.percentile}: must be in (0, 100]")
+    try:
+        times = [ndda_output.parse_time(t) for t in (args.times or "").split(",") if t]
+    except ValueError as error:
+        parser.error(f"--times: {error}")
 
     try:
         pvd = os.path.join(args.directory, "solution.pvd")
         files = ndda_output.read_pvd(pvd)
         history = cracked_edges(args.directory)
-        scene = scene_name(args.directory)
+        scene = ndda_output.scene_name(args.directory)
 
         # Every frame is read once: the colour scale and the axis limits
         # are the same for all pictures of a scene.
@@ -509,8 +486,8 @@ def main():
             )
         else:
             chosen = []
-            for text in args.times.split(","):
-                index = closest_frame(files, parse_time(text))
+            for time in times:
+                index = closest_frame(files, time)
                 chosen.append((f"{index:05d}", index))
 
         limits = colour_limits(frames, args)
@@ -523,8 +500,6 @@ def main():
             print(f"{path}: t = {frame.time * 1e3:.6g} ms ({os.path.basename(frame.path)})")
     except ndda_output.OutputError as error:
         sys.exit(f"plot_frames: {error}")
-    except argparse.ArgumentTypeError as error:
-        parser.error(str(error))
 
 
 def median_edge_length(frame):
