@@ -37,14 +37,19 @@ What a frame shows:
   same by every cell that shares them, while the two copies of a vertex
   split by a crack move apart.
 - Cracks in green: the outline edges of a frame that were not outline
-  edges in the first frame. They are matched by their midpoints in the
-  reference configuration (position minus displacement, the same on both
-  faces of a crack), within a tenth of the median outline edge length;
-  this survives large motions of the blocks. Limit: a crack whose faces
-  still touch to the last bit of float32 (usually the first step or two
-  after it forms, or a closed crack under compression) cannot be told from
-  unbroken material in the VTU file; the subtitle gives the statistics
-  file's 'Cracked edges' count so that such cracks are not missed.
+  edges before the first crack (in the first frame, or in any frame
+  before the statistics file's 'Cracked edges' becomes non-zero: the
+  faces of a pre-existing crack coincide in the first frame and move
+  apart under load). They are matched by their midpoints in the reference
+  configuration (position minus displacement, the same on both faces of a
+  crack), within 2 % of the median outline edge length; this survives
+  large motions of the blocks. Limits: a crack whose faces still touch to
+  the last bit of float32 (usually the first step or two after it forms,
+  or a closed crack under compression) cannot be told from unbroken
+  material in the VTU file, and a pre-existing crack that stays closed
+  until the first new crack is drawn green once it opens; the title gives
+  the statistics file's 'Cracked edges' count so that the count is never
+  missed.
 
 --auto picks the first frame, the first frame with a crack (the first
 output at or after the first step with 'Cracked edges' > 0 in the
@@ -80,6 +85,7 @@ class Frame:
         self.path = path
         self.time = time
         self.triangles = triangle_corners(data, path)
+        self.pieces = drawing_triangles(data, self.triangles)
         self.xy = data.points[:, :2]
         self.values, self.label, self.scale, self.diverging = field_values(
             data, field, path
@@ -102,6 +108,24 @@ def triangle_corners(data, path):
         )
     starts = starts[keep]
     return np.stack([data.connectivity[starts + i] for i in range(3)], axis=1)
+
+
+# A VTK quadratic triangle (corners 0 1 2, then the midpoints of 0-1, 1-2,
+# 2-0) cut into four triangles, so that all six values are drawn.
+QUADRATIC_PIECES = ((0, 3, 5), (3, 1, 4), (5, 4, 2), (3, 4, 5))
+
+
+def drawing_triangles(data, corners):
+    """The triangles to colour: P1 cells as they are, quadratic (P2) cells
+    in four pieces; other cells by their corners."""
+    starts = np.concatenate(([0], data.offsets[:-1]))
+    types = data.types[np.isin(data.types, TRIANGLE_TYPES)]
+    starts = starts[np.isin(data.types, TRIANGLE_TYPES)]
+    quadratic = starts[types == 22]
+    pieces = [corners[types != 22]]
+    for piece in QUADRATIC_PIECES:
+        pieces.append(np.stack([data.connectivity[quadratic + i] for i in piece], axis=1))
+    return np.concatenate(pieces)
 
 
 def block_ids(data, n_points):
@@ -177,13 +201,14 @@ class EdgeSet:
     """Midpoints of edges in the reference configuration, found again by
     position within a tolerance (a hash grid of cells of that size)."""
 
-    def __init__(self, frame, tolerance):
+    def __init__(self, frames, tolerance):
         self.tolerance = tolerance
         self.cells = set()
-        for i, j in self._bins(frame, frame.outline):
-            for di in (-1, 0, 1):
-                for dj in (-1, 0, 1):
-                    self.cells.add((i + di, j + dj))
+        for frame in frames:
+            for i, j in self._bins(frame, frame.outline):
+                for di in (-1, 0, 1):
+                    for dj in (-1, 0, 1):
+                        self.cells.add((i + di, j + dj))
 
     def _bins(self, frame, edges):
         middle = 0.5 * (frame.reference[edges[:, 0]] + frame.reference[edges[:, 1]])
@@ -220,7 +245,7 @@ def closest_frame(frames, time):
 
 
 def auto_selection(frames, history, outline_growth):
-    """[(label, frame index)] for --auto."""
+    """[(label, frame index)] for --auto, each frame once."""
     last = len(frames) - 1
     times = np.array([t for t, _ in frames])
     if history is not None:
@@ -230,12 +255,23 @@ def auto_selection(frames, history, outline_growth):
     cracked = np.nonzero(counts > 0)[0]
     if len(cracked) == 0:
         print("plot_frames: no crack in this run; --auto draws start, middle, end")
-        return [("start", 0), ("middle", last // 2), ("end", last)]
-    first = int(cracked[0])
-    halfway = 0.5 * (counts[first] + counts[last])
-    later = np.arange(first, last + 1)
-    middle = int(later[np.argmin(np.abs(counts[later] - halfway))])
-    return [("start", 0), ("first_crack", first), ("propagation", middle), ("end", last)]
+        chosen = [("start", 0), ("middle", last // 2), ("end", last)]
+    else:
+        first = int(cracked[0])
+        halfway = 0.5 * (counts[first] + counts[last])
+        later = np.arange(first, last + 1)
+        middle = int(later[np.argmin(np.abs(counts[later] - halfway))])
+        chosen = [
+            ("start", 0),
+            ("first_crack", first),
+            ("propagation", middle),
+            ("end", last),
+        ]
+    unique = []
+    for label, index in chosen:
+        if index not in [i for _, i in unique]:
+            unique.append((label, index))
+    return unique
 
 
 # --------------------------------------------------------------- drawing
@@ -251,8 +287,8 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
     (x0, x1), (y0, y1) = box
     width, height = x1 - x0, y1 - y0
     figure, axes, bar_axes, wide = layout(plt, width, height, args)
-    triangulation = Triangulation(x, y, frame.triangles)
-    cell_values = frame.values[frame.triangles]
+    triangulation = Triangulation(x, y, frame.pieces)
+    cell_values = frame.values[frame.pieces]
     vmin, vmax = limits
     cmap = plt.get_cmap(
         args.cmap if frame.diverging else "viridis", args.levels or None
@@ -477,7 +513,15 @@ def main():
         # Every frame is read once: the colour scale and the axis limits
         # are the same for all pictures of a scene.
         frames = [Frame(path, time, args.field) for time, path in files]
-        reference = EdgeSet(frames[0], 0.1 * median_edge_length(frames[0]))
+        # What was an outline before the first crack is no crack: frame 0
+        # and every frame before the statistics count a cracked edge (by
+        # then the faces of pre-existing cracks have usually moved apart).
+        uncracked = [
+            f for f in frames if history is not None and count_at(history, f.time) == 0
+        ]
+        reference = EdgeSet(
+            [frames[0]] + uncracked, 0.02 * median_edge_length(frames[0])
+        )
         new_edges = [reference.new_edges(frame) for frame in frames]
 
         if args.auto:
