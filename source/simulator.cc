@@ -1833,10 +1833,14 @@ namespace ndda
       contacts.carry_memory_from(old_contacts);
     setup_fracture();
 
-    // Element matrices of all cells on the present geometry, global
-    // matrices, gravity, internal force, loaded faces; then M a on the new
-    // mesh.
-    element_cache.update(dof_handler, mapping, parameters.materials, false, 0.);
+    // A crack changes no cell's shape (cells keep their index, vertex
+    // order and geometry; only dof numbers change): element matrices are
+    // recomputed only for cells that moved beyond the tolerance since
+    // their last computation, as in any step. Then global matrices,
+    // gravity, internal force, loaded faces, and M a on the new mesh.
+    const double tolerance = parameters.control.matrix_update_tolerance;
+    element_cache.update(
+      dof_handler, mapping, parameters.materials, tolerance > 0., tolerance);
     build_element_matrices(false);
     update_loaded_faces();
     inertia_force = lumped_mass();
