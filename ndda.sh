@@ -5,6 +5,9 @@
 #   ./ndda.sh path/scene.prm   the same, running the given scene
 #   ./ndda.sh test             install, build, and run the whole test suite (ctest)
 #   ./ndda.sh build            install and build only
+#   ./ndda.sh validate         long: run every validation case and rewrite
+#                              doc/validation.md, the gallery, the charts and
+#                              the stability maps (not part of `test`)
 #
 # Environment: NDDA_BUILD_DIR (default: build), NDDA_JOBS (default: number of
 # cores), NDDA_BUILD_TYPE (default: Release).
@@ -16,11 +19,13 @@ jobs="${NDDA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 build_type="${NDDA_BUILD_TYPE:-Release}"
 
 # Debian packages ndda needs to build and test.
-packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff)
+packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff python3)
+# And for ./ndda.sh validate's pictures (run with Debian's /usr/bin/python3).
+plot_packages=(python3-numpy python3-matplotlib)
 
 install_missing() {
   local missing=()
-  for p in "${packages[@]}"; do
+  for p in "${packages[@]}" "$@"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
       missing+=("$p")
     fi
@@ -41,7 +46,7 @@ install_missing() {
 }
 
 build() {
-  install_missing
+  install_missing "$@"
   if [ ! -f "$build_dir/CMakeCache.txt" ]; then
     echo "ndda.sh: configuring a $build_type build in $build_dir"
     cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
@@ -59,8 +64,17 @@ case "${1:-}" in
   build)
     build
     ;;
+  validate)
+    build "${plot_packages[@]}"
+    py=/usr/bin/python3
+    echo "ndda.sh: running the test suite (every validation case)"
+    (cd "$build_dir" && ctest --output-on-failure -j"$jobs" -E '^validation_page$')
+    "$py" "$here/scripts/validation_page.py" --template "$here/doc/validation.md.in" \
+      --values "$build_dir/tests" --out "$here/doc/validation.md"
+    "$here/scripts/validate_pictures.sh" "$build_dir/ndda" "$py"
+    ;;
   -h|--help)
-    sed -n '2,12p' "$0"
+    sed -n '2,15p' "$0"
     ;;
   *)
     scene="${1:-$here/prm/default.prm}"

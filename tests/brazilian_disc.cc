@@ -138,6 +138,8 @@ main(int argc, char **argv)
             std::max(max_plate_difference, std::abs(s.p_bottom / s.p_top - 1));
           max_kinetic_ratio = std::max(max_kinetic_ratio, s.kinetic / s.strain);
         }
+    const std::string key = "brazilian_disc.";
+    record(key + "disc_cells", n_disc_cells);
     for (const double level : {0.05, 0.1, 0.2, 0.4, 0.6, 0.8, 0.95, 1.})
       {
         const auto s =
@@ -152,7 +154,17 @@ main(int argc, char **argv)
                   << 100 * (s.sxx / reference - 1)
                   << " %; kinetic / strain energy of the disc "
                   << s.kinetic / s.strain << std::endl;
+        if (level < 0.15)
+          record(key + "startup_error_" + std::to_string(int(100 * level)),
+                 100 * (s.sxx / reference - 1),
+                 2);
       }
+    record(key + "max_error", 100 * max_error, 3);
+    record(key + "max_error_met", met(max_error < 0.05));
+    record(key + "plate_difference", 100 * max_plate_difference, 3);
+    record(key + "plate_difference_met", met(max_plate_difference < 0.02));
+    record(key + "kinetic_ratio", 100 * max_kinetic_ratio, 2);
+    record(key + "kinetic_ratio_met", met(max_kinetic_ratio < 1e-2));
     std::cout << "  from 20 % of the crack load on: largest error "
               << 100 * max_error << " %, plates differ by at most "
               << 100 * max_plate_difference
@@ -175,6 +187,19 @@ main(int argc, char **argv)
               << " MPa = " << last.sxx / T
               << " T, 2P/(pi D t) = " << 2 * last.p_top / (M_PI * D * t) / 1e6
               << " MPa" << std::endl;
+    record(key + "first_time", failure.time * 1e3);
+    record(key + "first_mode", mode_name(failure.mode));
+    record(key + "first_x", x / R, 2);
+    record(key + "first_y", y / R, 2);
+    record(key + "first_distance", failure.location.norm() * 1e3, 2);
+    record(key + "first_sxx", last.sxx / 1e6, 4);
+    record(key + "first_sxx_T", last.sxx / T, 4);
+    record(key + "first_reference", 2 * last.p_top / (M_PI * D * t) / 1e6, 4);
+    record(key + "first_p", last.p_top / 1e3, 3);
+    record(key + "first_met",
+           met(failure.mode == ndda::fracture::FailureMode::tension &&
+               std::abs(x) < 0.15 * R && std::abs(y) < 0.5 * R &&
+               std::abs(last.sxx / T - 1) < 0.05));
     check(failure.mode == ndda::fracture::FailureMode::tension,
           "the first crack is tensile");
     check(std::abs(x) < 0.15 * R, "the first crack is on the loaded diameter");
@@ -195,6 +220,17 @@ main(int argc, char **argv)
               << " blocks, the centre sigma_xx fell to " << min_sxx / 1e6
               << " MPa and P to " << min_p / 1e3 << " kN (at the crack "
               << last.p_top / 1e3 << " kN)" << std::endl;
+    record(key + "through_after", (through_time - crack_time) * 1e3, 2);
+    record(key + "y_low", y_low / R, 2);
+    record(key + "y_high", y_high / R, 2);
+    record(key + "n_near", n_near);
+    record(key + "n_far", n_far);
+    record(key + "cracked_through", n_cracked_through);
+    record(key + "min_sxx", min_sxx / 1e6, 2);
+    record(key + "min_p", min_p / 1e3, 3);
+    record(key + "split_met",
+           met(through_time > 0 && n_near > 4 * n_far && min_sxx < 0.1 * T &&
+               min_p < 0.9 * last.p_top));
     check(through_time > 0,
           "within 0.15 ms of the first crack, cracks run along the loaded "
           "diameter to within 0.15 R of both plates");
@@ -242,6 +278,20 @@ main(int argc, char **argv)
               << " MPa = " << sxx_max / T << " T, "
               << simulator.get_n_cracked_edges() << " edges cracked"
               << std::endl;
+    const std::string key = "brazilian_disc.table5_";
+    record(key + "time", failure.time * 1e3);
+    record(key + "mode", mode_name(failure.mode));
+    record(key + "x", failure.location[0] / R, 1);
+    record(key + "y", failure.location[1] / R, 2);
+    record(key + "sxx", sxx / 1e6, 3);
+    record(key + "sxx_T", sxx / T, 2);
+    record(key + "p", p / 1e3, 2);
+    record(key + "sxx_max", sxx_max / 1e6, 2);
+    record(key + "sxx_max_T", sxx_max / T, 2);
+    record(key + "p_max", p_max / 1e3, 3);
+    record(key + "first_met",
+           met(failure.mode == ndda::fracture::FailureMode::shear &&
+               std::abs(failure.location[1]) > 0.8 * R && sxx < 0.5 * T));
     check(failure.mode == ndda::fracture::FailureMode::shear,
           "Table 5 material: the first failure is in shear");
     check(std::abs(failure.location[1]) > 0.8 * R,
@@ -252,10 +302,6 @@ main(int argc, char **argv)
           "Table 5 material: the disc fails before the centre reaches T");
   }
 
-  std::cout << "wall time "
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             wall_start)
-                 .count()
-            << " s" << std::endl;
+  report_wall_time("brazilian_disc", wall_start);
   std::cout << "OK" << std::endl;
 }

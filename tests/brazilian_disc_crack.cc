@@ -94,6 +94,10 @@ main(int argc, char **argv)
             << h * 1e3 << " mm; pre-existing crack " << 2 * half * 1e3
             << " mm with " << recorder.n_initial_faces() / 2 << " faces"
             << std::endl;
+  const std::string key = "brazilian_disc_crack.";
+  record(key + "cells", n_edges / 3);
+  record(key + "mean_edge", h * 1e3, 3);
+  record(key + "crack_faces", recorder.n_initial_faces() / 2);
 
   // Run until the disc is in two large pieces (a tenth of its cells at
   // least).
@@ -136,6 +140,18 @@ main(int argc, char **argv)
             << tip_distance / h << " mean edges); P = " << p_crack / 1e3
             << " kN, P / (pi R t) = " << p_crack / (M_PI * R * t) / 1e6
             << " MPa" << std::endl;
+  record(key + "first_time", failure.time * 1e3);
+  record(key + "first_mode", mode_name(failure.mode));
+  record(key + "first_distance", tip_distance * 1e3, 3);
+  record(key + "first_distance_edges", tip_distance / h, 3);
+  record(key + "first_tip",
+         failure.location.distance(tips[0]) <
+             failure.location.distance(tips[1]) ?
+           "upper" :
+           "lower");
+  record(key + "first_p", p_crack / 1e3, 3);
+  record(key + "first_s", p_crack / (M_PI * R * t) / 1e6, 3);
+  record(key + "first_met", met(tip_distance < 2 * h));
   check(tip_distance < 2 * h, "the first crack starts near a tip");
 
   // 2. The wings.
@@ -185,6 +201,31 @@ main(int argc, char **argv)
            ++i)
         std::cout << ' ' << behind[i] * 1e3;
       std::cout << " mm" << std::endl;
+      const std::string  tip = key + (k == 0 ? "upper." : "lower.");
+      std::ostringstream edge_list;
+      edge_list << std::setprecision(4);
+      for (const double a : wing.edge_angles)
+        edge_list << (a == wing.edge_angles.front() ? "" : ", ")
+                  << (std::abs(a - wing.kink) < 1e-9 ? "**" : "") << a
+                  << (std::abs(a - wing.kink) < 1e-9 ? "**" : "");
+      record(tip + "start", wing.start.distance(wing.tip) * 1e3, 3);
+      record(tip + "start_node", behind.size() > 1 ? behind[1] * 1e3 : -1., 3);
+      record(tip + "kink", wing.kink);
+      record(tip + "kink_error", wing.kink - mts, 2);
+      record(tip + "edges", edge_list.str());
+      record(tip + "mean", wing.mean_direction, 3);
+      record(tip + "mean_points", wing.n_points);
+      record(tip + "exit_x", wing.exit[0] / R, 2);
+      record(tip + "exit_y", wing.exit[1] / R, 3);
+      record(tip + "start_met",
+             met(behind.size() > 1 &&
+                 wing.start.distance(wing.tip) < behind[1] + tolerance));
+      record(tip + "exit_met",
+             met(wing.exits && std::abs(wing.exit[0]) < 0.2 * R &&
+                 wing.exit[1] * wing.outward[1] > 0));
+      record(tip + "kink_met", met(wing.kink > 20 && wing.kink < 140));
+      record(tip + "mean_met",
+             met(wing.mean_direction > 20 && wing.mean_direction < 140));
       check(behind.size() > 1 &&
               wing.start.distance(wing.tip) < behind[1] + tolerance,
             "the wing starts at the tip or at the first crack node behind "
@@ -210,12 +251,12 @@ main(int argc, char **argv)
             << " ms after the first crack, at t = " << split_time * 1e3
             << " ms; " << simulator.get_n_cracked_edges() << " edges cracked, "
             << simulator.get_mesh().n_blocks() << " blocks" << std::endl;
+  record(key + "split_time", split_time * 1e3);
+  record(key + "split_after", (split_time - crack_time) * 1e3, 3);
+  record(key + "split_cracked", simulator.get_n_cracked_edges());
+  record(key + "split_met", met(split_time > 0));
   check(split_time > 0, "the disc splits into two large pieces");
 
-  std::cout << "wall time "
-            << std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                             wall_start)
-                 .count()
-            << " s" << std::endl;
+  report_wall_time("brazilian_disc_crack", wall_start);
   std::cout << "OK" << std::endl;
 }
