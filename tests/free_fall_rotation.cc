@@ -89,6 +89,10 @@ main(int argc, char **argv)
       // nearly equal numbers (d and dt v0), and the rigid-body part of the
       // solution is set by the small mass term of K + c M. The bound is
       // 1e-9 of the fall height for 100 steps.
+      const std::string key = "free_fall_rotation." + integrator + ".";
+      record(key + "fall_error", worst, 2);
+      record(key + "fall_relative", worst / (0.5 * 9.81), 2);
+      record(key + "fall_met", met(worst < 1e-9 * 0.5 * 9.81));
       check(worst < 1e-9 * 0.5 * 9.81, "free fall not exact to round-off");
     }
 
@@ -127,6 +131,22 @@ main(int argc, char **argv)
                 << simulator.kinetic_energy() /
                      (0.5 * 2000 * omega * omega / 6.)
                 << std::endl;
+      const std::string key = "free_fall_rotation.dt" +
+                              std::to_string(int(std::round(dt * 1e3))) + "ms.";
+      record(key + "area_change", 100 * change, 3);
+      record(key + "predicted", 100 * predicted, 3);
+      record(key + "angle", angle * 180 / M_PI, 3);
+      record(key + "kinetic_ratio",
+             simulator.kinetic_energy() / (0.5 * 2000 * omega * omega / 6.),
+             4);
+      record(key + "prediction_met",
+             met(std::abs(change / predicted - 1) < 0.05));
+      if (previous_change > 0)
+        {
+          record("free_fall_rotation.halving", change / previous_change, 3);
+          record("free_fall_rotation.halving_met",
+                 met(std::abs(change / previous_change - 0.5) < 0.05));
+        }
       check(std::abs(change / predicted - 1) < 0.05,
             "area change differs from the linear-update prediction");
       if (previous_change > 0)
