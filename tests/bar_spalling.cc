@@ -49,6 +49,9 @@ main(int argc, char **argv)
   const double expected_time = L / c + tau;
   std::cout << "d'Alembert: first failure at " << expected_time * 1e6 << " us, "
             << xi * 1e3 << " mm from the free end" << std::endl;
+  const std::string key = "bar_spalling.";
+  record(key + "expected_time", expected_time * 1e6, 4);
+  record(key + "expected_distance", xi * 1e3, 3);
 
   {
     std::string text = read_example("bar_spalling");
@@ -72,6 +75,14 @@ main(int argc, char **argv)
                     "shear")
               << "); errors " << (failure.time - expected_time) * 1e6 << " us, "
               << (distance - xi) * 1e3 << " mm" << std::endl;
+    record(key + "newmark_time", failure.time * 1e6, 4);
+    record(key + "newmark_distance", distance * 1e3, 3);
+    record(key + "time_error", (failure.time - expected_time) * 1e6, 2);
+    record(key + "distance_error", (distance - xi) * 1e3, 2);
+    record(key + "time_met",
+           met(failure.mode == ndda::fracture::FailureMode::tension &&
+               std::abs(failure.time - expected_time) < 5e-6));
+    record(key + "distance_met", met(std::abs(distance - xi) < 0.012));
     check(failure.mode == ndda::fracture::FailureMode::tension,
           "the first failure is tensile");
     check(std::abs(failure.time - expected_time) < 5e-6,
@@ -129,13 +140,25 @@ main(int argc, char **argv)
             x_max[b] = std::max(x_max[b], mesh.vertices[v][0]);
           }
       }
-    unsigned int n_large = 0;
+    unsigned int       n_large = 0;
+    std::ostringstream pieces;
     for (unsigned int b = 0; b < cells.size(); ++b)
       {
         std::cout << "  block " << b << ": " << cells[b] << " cells, x from "
                   << x_min[b] << " to " << x_max[b] << " m" << std::endl;
         n_large += cells[b] > 20 ? 1 : 0;
+        pieces << (b > 0 ? ", " : "") << cells[b];
       }
+    record(key + "dda_time", failure.time * 1e6, 4);
+    record(key + "dda_distance", (L - failure.location[0]) * 1e3, 2);
+    record(key + "cracked", simulator.get_n_cracked_edges());
+    record(key + "pieces", pieces.str());
+    record(key + "pieces_met", met(n_large == 2));
+    record(key + "velocity", velocity, 3);
+    record(key + "velocity_met", met(velocity > 0.5));
+    record(key + "stress", stress / 1e6, 2);
+    record(key + "peak", peak / 1e6, 3);
+    record(key + "stress_met", met(stress < 0.2 * T));
     check(n_large == 2, "the bar splits into two large pieces");
     check(velocity > 0.5, "the piece leaves with a positive velocity");
     check(stress < 0.2 * T, "the piece's stress rings down below 0.2 T");
