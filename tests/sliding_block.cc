@@ -159,14 +159,18 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::cout << std::setprecision(4);
 
-  const auto report = [](const std::string &what, const Result &r) {
-    std::cout << "    " << what << ": " << r.steps << " steps, "
-              << double(r.iterations) / r.steps
-              << " open-close iterations per step, max penetration "
-              << r.max_penetration << " m (tolerance " << r.tolerance << " m), "
-              << r.seconds << " s" << std::endl;
-    check(r.max_penetration <= r.tolerance, what + ": penetration");
-  };
+  const auto report =
+    [](const std::string &what, const Result &r, const std::string &key) {
+      record(key + "iterations", double(r.iterations) / r.steps, 3);
+      record(key + "penetration", r.max_penetration, 1);
+      record(key + "tolerance", r.tolerance, 2);
+      std::cout << "    " << what << ": " << r.steps << " steps, "
+                << double(r.iterations) / r.steps
+                << " open-close iterations per step, max penetration "
+                << r.max_penetration << " m (tolerance " << r.tolerance
+                << " m), " << r.seconds << " s" << std::endl;
+      check(r.max_penetration <= r.tolerance, what + ": penetration");
+    };
 
   // Sliding with friction.
   const double phi = 20. * M_PI / 180.;
@@ -180,7 +184,13 @@ main(int argc, char **argv)
       const double error = r.displacement / expected - 1;
       std::cout << "  dt = " << dt << ": slide " << r.displacement
                 << " m, error " << 100 * error << " %" << std::endl;
-      report("friction, dt = " + std::to_string(dt), r);
+      const std::string key = "sliding_block.friction_" +
+                              std::to_string(int(std::round(dt * 1e4))) + ".";
+      record(key + "expected", expected, 4);
+      record(key + "slide", r.displacement, 4);
+      record(key + "error", 100 * error, 2);
+      record(key + "met", met(std::abs(error) < 5e-3));
+      report("friction, dt = " + std::to_string(dt), r, key);
       check(std::abs(error) < 5e-3, "sliding with friction within 0.5 %");
     }
 
@@ -197,7 +207,13 @@ main(int argc, char **argv)
       std::cout << "  " << integrator << ", dt = " << dt << ": slide "
                 << r.displacement << " m, error " << 100 * error << " %"
                 << std::endl;
-      report("frictionless, dt = " + std::to_string(dt), r);
+      const std::string key =
+        "sliding_block.free_" + std::to_string(int(std::round(dt * 1e4))) + ".";
+      record(key + "expected", free_slide, 5);
+      record(key + "slide", r.displacement, 5);
+      record(key + "error", 100 * error, 1);
+      record(key + "met", met(std::abs(error) < 1e-3));
+      report("frictionless, dt = " + std::to_string(dt), r, key);
       check(std::abs(error) < 1e-3, "frictionless sliding within 0.1 %");
     }
 
@@ -208,7 +224,11 @@ main(int argc, char **argv)
       const Result r = run("DDA", 1e-3, 35, penalty);
       std::cout << "  penalty " << penalty << " E: creep " << r.displacement
                 << " m" << std::endl;
-      report("stick, penalty " + std::to_string(penalty), r);
+      const std::string key =
+        "sliding_block.stick_" + std::to_string(int(penalty)) + ".";
+      record(key + "creep", r.displacement * 1e6, 2);
+      record(key + "met", met(std::abs(r.displacement) < 1e-4));
+      report("stick, penalty " + std::to_string(penalty), r, key);
       check(std::abs(r.displacement) < 1e-4, "creep below 0.1 mm");
     }
   std::cout << "OK" << std::endl;
