@@ -1428,7 +1428,12 @@ def main():
         written += [csv_path, meta_path]
     print(f"{meta['n_runs']} settings, {meta['n_processes']} runs in "
           f"{sig(meta['elapsed'] / 60, 2)} min; wrote {', '.join(written)}")
-    return 0 if all(r.get("ok") for r in all_runs) else 1
+    n_failed = sum(1 for r in all_runs if not r.get("ok"))
+    if n_failed:
+        # A run that fails is a result of the sweep (listed in the markdown),
+        # not a failure of the script.
+        print(f"{n_failed} ndda runs failed; the markdown lists them")
+    return 0
 
 
 if __name__ == "__main__":
