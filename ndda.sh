@@ -69,6 +69,10 @@ case "${1:-}" in
     py=/usr/bin/python3
     echo "ndda.sh: running the test suite (every validation case)"
     (cd "$build_dir" && ctest --output-on-failure -j"$jobs" -E '^validation_page$')
+    echo "ndda.sh: the long validation runs (finer meshes; about 10 minutes)"
+    mkdir -p "$build_dir/tests/inclined_crack_fine"
+    (cd "$build_dir/tests/inclined_crack_fine" &&
+      ../test_inclined_crack 0.00125 > screen-output 2>&1)
     "$py" "$here/scripts/validation_page.py" --template "$here/doc/validation.md.in" \
       --values "$build_dir/tests" --out "$here/doc/validation.md"
     "$here/scripts/validate_pictures.sh" "$build_dir/ndda" "$py"

@@ -266,6 +266,46 @@ main(int argc, char **argv)
       std::cout << "  " << (r.separated ? "separated" : "NOT separated")
                 << " into " << r.n_large << " large pieces at "
                 << r.separation_time * 1e6 << " us" << std::endl;
+
+      // The figures for doc/validation.md, keyed by the mesh size in mm.
+      std::ostringstream mm;
+      mm << h * 1e3;
+      const std::string key = "inclined_crack." + mm.str() + "mm.";
+      record(key + "cells", r.n_cells);
+      record(key + "mean_edge", r.mean_edge * 1e3, 3);
+      record(key + "face", r.crack_node_spacing * 1e3, 3);
+      record(key + "first_time", r.first_failure_time * 1e6, 4);
+      record(key + "first_distance", r.first_failure_distance * 1e3, 3);
+      record(key + "kinetic_beyond", r.kinetic_beyond, 2);
+      record(key + "strain", r.strain, 3);
+      record(key + "quasi_static",
+             100 * r.kinetic_beyond / std::max(r.strain, 1e-300),
+             2);
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const auto        &wing = r.wings[k];
+          const std::string  w    = key + (k == 0 ? "upper." : "lower.");
+          std::ostringstream edges;
+          edges << std::setprecision(4);
+          for (const double a : wing.edge_angles)
+            edges << (a == wing.edge_angles.front() ? "" : ", ")
+                  << (std::abs(a - wing.kink) < 1e-9 ? "**" : "") << a
+                  << (std::abs(a - wing.kink) < 1e-9 ? "**" : "");
+          record(w + "start", wing.start.distance(wing.tip) * 1e3, 3);
+          record(w + "kink", wing.kink, 3);
+          record(w + "kink_error", wing.kink - wing.mts, 3);
+          record(w + "edges", edges.str());
+          record(w + "mean", wing.mean_direction, 3);
+          record(w + "exit_x", wing.exit[0] * 1e3, 3);
+          record(w + "exit_y", wing.exit[1] * 1e3, 3);
+          record(w + "exit_angle",
+                 std::min(std::abs(wing.exit_angle),
+                          180 - std::abs(wing.exit_angle)),
+                 2);
+        }
+      record(key + "separation", r.separation_time * 1e6, 4);
+      record(key + "cracked", r.n_cracked);
+      record(key + "run_time", r.run_time, 2);
     }
 
   // The assertions, for both meshes.
