@@ -150,6 +150,22 @@ main(int argc, char **argv)
                 << r.bonded_at_end << ", fall " << r.displacement
                 << " m, max penetration " << r.max_penetration
                 << " m (tolerance " << r.tolerance << " m)" << std::endl;
+      const std::string key = std::string("bonded_joints.hanging_") +
+                              (factor > 1 ? "strong." : "weak.");
+      record(key + "bonded_length", r.bonded_length_at_start, 6);
+      record(key + "bonded_at_end", r.bonded_at_end);
+      record(key + "fall", r.displacement * (factor > 1 ? 1e6 : 1.), 4);
+      if (factor > 1)
+        record(key + "met",
+               met(std::abs(r.bonded_length_at_start - 1.) < 1e-9 &&
+                   std::abs(r.displacement) < 1e-3 && r.bonded_at_end > 0));
+      else
+        {
+          const double error = r.displacement / (0.5 * g * 0.3 * 0.3) - 1;
+          record(key + "error", std::abs(error), 1);
+          record(key + "met",
+                 met(r.bonded_at_end == 0 && std::abs(error) < 1e-2));
+        }
       check(r.max_penetration <= r.tolerance, "penetration");
       if (factor > 1)
         {
@@ -175,6 +191,7 @@ main(int argc, char **argv)
     2600 * g * 0.5 * (std::sin(slope) - std::cos(slope) * std::tan(phi));
   std::cout << "incline: cohesion needed to hold the block " << needed << " Pa"
             << std::endl;
+  record("bonded_joints.needed", needed / 1e3, 3);
   const Tensor<1, 2> down_slope({-std::cos(slope), -std::sin(slope)});
   for (const double cohesion : {5000., 10000., 20000., 40000., 1000.})
     {
@@ -194,6 +211,25 @@ main(int argc, char **argv)
                 << r.bonded_at_end << ", slide " << r.displacement
                 << " m, max penetration " << r.max_penetration
                 << " m (tolerance " << r.tolerance << " m)" << std::endl;
+      const std::string key =
+        "bonded_joints.incline_" + std::to_string(int(cohesion / 1000)) + ".";
+      record(key + "bonded_at_end", r.bonded_at_end);
+      record(key + "slide", r.displacement, 4);
+      record(key + "creep", r.displacement * 1e6, 2);
+      if (cohesion < needed)
+        {
+          const double error =
+            r.displacement /
+              (0.5 * g * (std::sin(slope) - std::cos(slope) * std::tan(phi)) *
+               0.25) -
+            1;
+          record(key + "error", 100 * error, 2);
+          record(key + "met",
+                 met(r.bonded_at_end == 0 && std::abs(error) < 1e-2));
+        }
+      else if (cohesion >= 40000.)
+        record(key + "met",
+               met(std::abs(r.displacement) < 1e-4 && r.bonded_at_end > 0));
       check(r.max_penetration <= r.tolerance, "penetration");
       if (cohesion > needed)
         {

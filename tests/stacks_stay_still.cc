@@ -85,6 +85,14 @@ namespace
               << " mm/s in the second half), max penetration "
               << max_penetration * 1e3 << " mm (tolerance " << tolerance * 1e3
               << " mm)" << std::endl;
+    const std::string key = "stacks_stay_still." + name + ".";
+    record(key + "drift", max_drift * 1e3, 2);
+    record(key + "displacement", max_displacement * 1e3, 2);
+    record(key + "speed", max_speed * 1e3, 2);
+    record(key + "late_speed", late_speed * 1e3, 2);
+    record(key + "penetration", max_penetration * 1e3, 1);
+    record(key + "tolerance", tolerance * 1e3, 2);
+    record(key + "iterations", iterations / steps, 2);
   }
 } // namespace
 
