@@ -127,6 +127,18 @@ main(int argc, char **argv)
                 << "), max penetration " << r.max_penetration * 1e3
                 << " mm (tolerance " << r.tolerance * 1e3 << " mm)"
                 << std::endl;
+      const std::string key = std::string("vertex_vertex.example1.") +
+                              (method == "revised" ? "revised." : "shortest.");
+      record(key + "side", side < 0 ? "left" : "right");
+      record(key + "x", side, 2);
+      record(key + "turn", turn * 180 / M_PI, 3);
+      record(key + "sense", turn < 0 ? "clockwise" : "anticlockwise");
+      record(key + "penetration", r.max_penetration * 1e3, 3);
+      record(key + "tolerance", r.tolerance * 1e3, 2);
+      record(key + "thesis",
+             method == "revised" ?
+               (side < 0 && turn < 0 ? "same" : "**differs**") :
+               (side > 0 && turn > 0 ? "same" : "**differs**"));
       check(side != 0, "example 1: the vertex never left the apex");
       check(r.max_penetration <= r.tolerance, "example 1: penetration");
       if (method == "revised")
@@ -163,6 +175,17 @@ main(int argc, char **argv)
                   << "), max penetration " << r.max_penetration * 1e3
                   << " mm (tolerance " << r.tolerance * 1e3 << " mm)"
                   << std::endl;
+        const std::string key =
+          std::string("vertex_vertex.example2.") +
+          (method == "revised" ? "revised." : "shortest.") + penalty + "_" +
+          (dt == "0.05" ? "50" : "25") + ".";
+        record(key + "x", x_end, 2);
+        record(key + "where",
+               landed ? "on the right edge" : "not on the right edge");
+        record(key + "penetration", r.max_penetration * 1e3, 2);
+        record(key + "thesis",
+               landed == (method == "revised" || !thesis) ? "same" :
+                                                            "**differs**");
         if (method == "revised")
           {
             check(landed,
@@ -259,6 +282,13 @@ end
                   << r.max_vertex_springs << ", max penetration "
                   << r.max_penetration * 1e3 << " mm (tolerance "
                   << r.tolerance * 1e3 << " mm)" << std::endl;
+        const std::string key =
+          "vertex_vertex.corners." +
+          std::to_string(int(std::round(offset * 1e3))) + "." +
+          (method == "revised" ? "revised." : "shortest.");
+        record(key + "side", x_end < 0 ? "left" : "right");
+        record(key + "penetration", r.max_penetration * 1e3, 2);
+        record(key + "springs", r.max_vertex_springs);
         check(r.max_penetration <= r.tolerance, "corners: penetration");
         check(std::abs(x_end) > 0.1, "corners: the block stayed on the corner");
         if (offset != 0.)
