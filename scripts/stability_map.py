@@ -585,6 +585,8 @@ def plot_scene(scene, rows, penalties, step_factors, path):
 
 
 def write_csv(rows, path):
+    """runs.csv; called after every run, so that a stopped sweep keeps its
+    rows (--from-csv draws them)."""
     with open(path, "w", newline="") as stream:
         writer = csv.DictWriter(stream, fieldnames=CSV_FIELDS, extrasaction="ignore")
         writer.writeheader()
@@ -945,6 +947,7 @@ def main():
         work = os.path.join(scratch, f"run{number_run:04d}")
         row = run_case(ndda, scene, integrator, method, penalty, factor, work, args.timeout)
         rows.append(row)
+        write_csv(rows, os.path.join(args.out_dir, "runs.csv"))
         if not args.keep:
             shutil.rmtree(work, ignore_errors=True)
         elapsed = time.monotonic() - start
