@@ -130,6 +130,10 @@ main(int argc, char **argv)
                 << fx << ", " << fy << ") N, relative errors "
                 << std::scientific << std::setprecision(2) << fx_error << ", "
                 << fy_error << std::defaultfloat << std::endl;
+      const std::string key = "mass_and_loads.p" + std::to_string(degree) + ".";
+      record(key + "mass_error", mass_error, 2);
+      record(key + "fx_error", fx_error, 2);
+      record(key + "fy_error", fy_error, 2);
       check(mass_error < 1e-12, "total mass");
       check(fx_error < 1e-12 && fy_error < 1e-12, "load resultant");
     }

@@ -112,6 +112,12 @@ main(int argc, char **argv)
                   << std::setprecision(2) << u_error
                   << ", relative stress error " << stress_error
                   << std::defaultfloat << std::endl;
+        const std::string key =
+          "patch_test." +
+          std::string(plane == "plane stress" ? "stress" : "strain") + "_p" +
+          std::to_string(degree) + ".";
+        record(key + "u_error", u_error, 2);
+        record(key + "stress_error", stress_error, 2);
         check(u_error < 1e-11, "displacement not reproduced to round-off");
         check(stress_error < 1e-11, "stress not reproduced to round-off");
       }
