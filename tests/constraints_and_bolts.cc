@@ -186,6 +186,10 @@ main(int argc, char **argv)
                 << std::scientific << std::setprecision(2) << along_error
                 << ", normal " << u * normal << " m" << std::defaultfloat
                 << std::setprecision(6) << std::endl;
+      const std::string key =
+        "constraints_and_bolts." + method + "_" + solver + ".";
+      record(key + "along_error", along_error, 2);
+      record(key + "normal", std::abs(u * normal), 2);
       check(along_error < (method == "exact" ? 1e-6 : 1e-3), "roller sliding");
       check(std::abs(u * normal) < 1e-7, "motion normal to the rollers");
     }
@@ -211,6 +215,10 @@ main(int argc, char **argv)
                 << "), relative error " << std::scientific
                 << std::setprecision(2) << error << std::defaultfloat
                 << std::setprecision(6) << std::endl;
+      record(std::string("constraints_and_bolts.bolt_") +
+               (pretension > 0 ? "pretension" : "pull") + ".error",
+             error,
+             2);
       check(error < 1e-4, "bolt stretch");
     }
 
@@ -227,6 +235,7 @@ main(int argc, char **argv)
     std::cout << "viscosity: velocity after 1 s " << v << " m/s (exact "
               << exact << "), relative error " << std::scientific
               << std::setprecision(2) << error << std::endl;
+    record("constraints_and_bolts.viscous_error", error, 2);
     check(error < 1e-3, "viscous decay");
   }
   std::cout << "OK" << std::endl;
