@@ -73,6 +73,13 @@ case "${1:-}" in
     mkdir -p "$build_dir/tests/inclined_crack_fine"
     (cd "$build_dir/tests/inclined_crack_fine" &&
       ../test_inclined_crack 0.00125 > screen-output 2>&1)
+    echo "ndda.sh: the benchmarks whose figures the page quotes"
+    for b in "step_vs_plain_solve 1e4 1e5" "contact_step" "crack_event 1e4 1e5"; do
+      set -- $b
+      mkdir -p "$build_dir/tests/benchmark_$1"
+      (cd "$build_dir/tests/benchmark_$1" &&
+        "$build_dir/benchmarks/$1" "${@:2}" > screen-output 2>&1)
+    done
     "$py" "$here/scripts/validation_page.py" --template "$here/doc/validation.md.in" \
       --values "$build_dir/tests" --out "$here/doc/validation.md"
     "$here/scripts/validate_pictures.sh" "$build_dir/ndda" "$py"

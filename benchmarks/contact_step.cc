@@ -21,6 +21,7 @@
 #include <ndda/simulator.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -112,6 +113,15 @@ namespace
               << double(simulator.n_factorizations() - factorizations_at_skip) /
                    times.size()
               << std::endl;
+    // For doc/validation.md (scripts/validation_page.py).
+    std::string key = label;
+    for (char &c : key)
+      if (!std::isalnum(static_cast<unsigned char>(c)))
+        c = '_';
+    std::cout << std::defaultfloat << std::setprecision(3)
+              << "@value contact_step." << key << ".ms "
+              << 1e3 * total / times.size() << "\n@value contact_step." << key
+              << ".median " << 1e3 * sorted[sorted.size() / 2] << std::endl;
   }
 } // namespace
 

@@ -141,5 +141,13 @@ main(int argc, char **argv)
       std::cout << n_cells << ", " << first << ", " << steady << ", " << crack
                 << ", " << after << ", " << (crack + after) / first
                 << std::endl;
+      // For doc/validation.md (scripts/validation_page.py).
+      const std::string key =
+        "crack_event." + std::to_string(int(std::round(std::log10(target)))) +
+        ".";
+      std::cout << std::setprecision(3) << "@value " << key << "cells "
+                << n_cells << "\n@value " << key << "crack_ms " << 1e3 * crack
+                << "\n@value " << key << "ratio " << (crack + after) / first
+                << std::setprecision(6) << std::endl;
     }
 }

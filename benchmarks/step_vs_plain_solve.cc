@@ -495,6 +495,18 @@ main(int argc, char **argv)
                     << "  (|d_plain| = " << plain.solution.l2_norm() << " m)"
                     << std::endl;
 
+          {
+            // For doc/validation.md (scripts/validation_page.py).
+            const std::string key =
+              "step_vs_plain_solve." +
+              std::to_string(int(std::round(std::log10(target)))) + ".";
+            std::cout << std::setprecision(3) << "@value " << key
+                      << "first_plain " << first_step / plain_total
+                      << "\n@value " << key << "step_resolve "
+                      << mean_step / plain.resolve_time << "\n@value " << key
+                      << "first_matched " << first_step / matched_total
+                      << std::setprecision(6) << std::endl;
+          }
           timing.add_value("n_dofs", n_dofs);
           timing.add_value("ndda first step (s)", first_step);
           timing.add_value("ndda per step (s)", mean_step);
