@@ -22,6 +22,7 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace ndda
@@ -2149,6 +2150,25 @@ namespace ndda
         block[c]    = mesh.block_of_cell(c);
         material[c] = cell->material_id();
       }
+    // The number of each cell's sides that are crack faces (pre-existing
+    // or new): the faces of a fresh crack touch, so without this field a
+    // picture cannot tell them from an unbroken edge. A crack face is a
+    // side of its cell with the same vertex order.
+    Vector<double> crack_faces(n_cells);
+    {
+      const auto &block_mesh = mesh.get_block_mesh();
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int> side_of;
+      for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
+        for (unsigned int j = 0; j < 3; ++j)
+          side_of[{block_mesh.triangles[c][j],
+                   block_mesh.triangles[c][(j + 1) % 3]}] = c;
+      for (const auto &e : block_mesh.crack_edges)
+        {
+          const auto side = side_of.find({e[0], e[1]});
+          if (side != side_of.end() && side->second < n_cells)
+            crack_faces[side->second] += 1.;
+        }
+    }
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
@@ -2174,6 +2194,9 @@ namespace ndda
     data_out.add_data_vector(block, "block_id", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(material,
                              "material_id",
+                             DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(crack_faces,
+                             "crack_faces",
                              DataOut<dim>::type_cell_data);
     data_out.build_patches(mapping, parameters.control.element_degree);
     DataOutBase::VtkFlags flags;
