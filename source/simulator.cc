@@ -2301,7 +2301,17 @@ namespace ndda
     next_output_time = interval;
     while (time < end_time * (1. - 1e-12))
       {
-        do_time_step();
+        try
+          {
+            do_time_step();
+          }
+        catch (...)
+          {
+            // Keep the rows since the last progress line: they show how
+            // the run went wrong.
+            write_statistics();
+            throw;
+          }
         if (time >= next_output_time * (1. - 1e-12) ||
             time >= end_time * (1. - 1e-12))
           {
