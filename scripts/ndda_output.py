@@ -18,6 +18,18 @@ Debian's /usr/bin/python3 (python3-numpy).
   point columns are named as in the file's header, 'point 0 sigma_xx'
   etc.; measure_point_positions(path) gives each point's (x, y).
 - scene_name(directory): 'Scene name' from the run's parameters.prm.
+- read_prm_text(text), read_parameters(directory): the entries of a .prm
+  text or of the run's parameters.prm as {'Materials/rock/Density': '2600'};
+  points_of('x, y; x, y') the points of a polygon entry.
+- first_crack_time(directory): the first time with 'Cracked edges' > 0 in
+  the statistics file (None without a crack).
+- cell_corners(vtu), cell_areas(vtu, corners), cell_block_ids(vtu,
+  corners): the triangles of a VTU file, their areas on the mesh written
+  (the deformed one) and their block ids.
+- stress_resultant(vtu, cells, component, height, thickness) and
+  plate_force(vtu, block, thickness): a force from cell stresses by the
+  mean stress theorem (the Brazilian disc's plates, a specimen's axial
+  load).
 - parse_time(text): '2.1e-3' (s), '2.1ms' or '210us' in seconds.
 
 Every error names the file and what is wrong with it.
@@ -297,3 +309,97 @@ def parse_time(text):
         return float(match.group(1)) * factor[match.group(2)]
     except (AttributeError, ValueError):
         raise ValueError(f"'{text}' is not a time (e.g. 2.1e-3, 2.1ms, 210us)")
+
+
+def read_prm_text(text):
+    """{'Materials/rock/Density': '2600', ...} from a .prm text (the last
+    set of an entry wins, as in ndda)."""
+    entries = {}
+    stack = []
+    text = re.sub(r"\\\s*\n", " ", text)  # continuation lines
+    for line in text.splitlines():
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        match = re.match(r"subsection\s+(.*\S)", line)
+        if match:
+            stack.append(match.group(1))
+            continue
+        if line == "end":
+            stack.pop()
+            continue
+        match = re.match(r"set\s+([^=]*\S)\s*=\s*(.*)", line)
+        if match:
+            entries["/".join(stack + [match.group(1)])] = match.group(2).strip()
+    return entries
+
+
+def read_parameters(directory):
+    """The entries of the run's parameters.prm (read_prm_text)."""
+    path = os.path.join(directory, "parameters.prm")
+    try:
+        with open(path) as stream:
+            return read_prm_text(stream.read())
+    except OSError as error:
+        raise OutputError(f"{path}: cannot read: {error}")
+
+
+def points_of(text):
+    """'x, y; x, y' -> array of points."""
+    return np.array([[float(v) for v in p.split(",")] for p in text.split(";")])
+
+
+def first_crack_time(directory):
+    """Time (s) of the first statistics row with 'Cracked edges' > 0, or
+    None (no crack, or no such column)."""
+    path = os.path.join(directory, "statistics")
+    if not os.path.exists(path):
+        return None
+    table = read_table(path)
+    if "Cracked edges" not in table or "Time (s)" not in table:
+        return None
+    cracked = np.nonzero(table["Cracked edges"] > 0)[0]
+    return float(table["Time (s)"][cracked[0]]) if len(cracked) else None
+
+
+def cell_corners(vtu):
+    """Corner point indices (n_cells x 3) of the VTU file's cells (the
+    first three vertices of each: the corners of a P1 or P2 triangle)."""
+    starts = vtu.offsets - np.diff(np.concatenate([[0], vtu.offsets]))
+    return np.stack([vtu.connectivity[starts + k] for k in range(3)], axis=1)
+
+
+def cell_areas(vtu, corners):
+    """Areas of the triangles (from their three corners, on the mesh as
+    written: the deformed configuration)."""
+    p = vtu.points
+    a = p[corners[:, 1]] - p[corners[:, 0]]
+    b = p[corners[:, 2]] - p[corners[:, 0]]
+    return 0.5 * (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
+
+
+def cell_block_ids(vtu, corners):
+    """Block id of each cell (its first corner's 'block_id')."""
+    return np.rint(vtu.point_data["block_id"][corners[:, 0]]).astype(int)
+
+
+def stress_resultant(vtu, cells, component, height, thickness):
+    """-t sum_c A_c sigma_c / h over the chosen cells (a boolean mask of
+    cell_corners' rows): by the mean stress theorem the compressive force
+    a body in equilibrium carries between two faces h apart, normal to
+    them (component 'stress_yy' for faces y = const). The VTU's stress is
+    the cell's mean stress, the same on every point of the cell (P1)."""
+    corners = cell_corners(vtu)[cells]
+    area = cell_areas(vtu, corners)
+    stress = vtu.point_data[component][corners[:, 0]]
+    return -thickness * np.sum(area * stress) / height
+
+
+def plate_force(vtu, block, thickness):
+    """P = -t sum_c A_c sigma_yy,c / h over the cells of one block (a
+    loading plate of height h, measured on the deformed mesh; plate_force()
+    of tests/plates.h)."""
+    corners = cell_corners(vtu)
+    chosen = cell_block_ids(vtu, corners) == block
+    y = vtu.points[corners[chosen].ravel(), 1]
+    return stress_resultant(vtu, chosen, "stress_yy", y.max() - y.min(), thickness)

@@ -215,32 +215,10 @@ def overrides(case, settings):
     return "\n".join(text) + "\n"
 
 
-def read_prm_text(text):
-    """{'Materials/rock/Density': '2600', ...} from a .prm text (the last
-    set of an entry wins, as in ndda)."""
-    entries = {}
-    stack = []
-    text = re.sub(r"\\\s*\n", " ", text)  # continuation lines
-    for line in text.splitlines():
-        line = line.split("#", 1)[0].strip()
-        if not line:
-            continue
-        match = re.match(r"subsection\s+(.*\S)", line)
-        if match:
-            stack.append(match.group(1))
-            continue
-        if line == "end":
-            stack.pop()
-            continue
-        match = re.match(r"set\s+([^=]*\S)\s*=\s*(.*)", line)
-        if match:
-            entries["/".join(stack + [match.group(1)])] = match.group(2).strip()
-    return entries
-
-
-def points_of(text):
-    """'x, y; x, y' -> array of points."""
-    return np.array([[float(v) for v in p.split(",")] for p in text.split(";")])
+# The .prm reader and the polygon parser live in ndda_output.py (shared
+# with the gallery's scripts).
+read_prm_text = ndda_output.read_prm_text
+points_of = ndda_output.points_of
 
 
 # --------------------------------------------------------------------------
@@ -476,22 +454,9 @@ class Disc:
 
     @staticmethod
     def plate_force(vtu, block, thickness):
-        """P = -t sum_c A_c sigma_yy,c / h over the plate's cells, on the
-        deformed mesh of the VTU file (plate_force() of tests/plates.h).
-        The VTU's stress is the cell's mean stress, the same on every
-        point of the cell; A_c from the cell's three corners."""
-        offsets = vtu.offsets
-        starts = offsets - np.diff(np.concatenate([[0], offsets]))
-        corners = np.stack([vtu.connectivity[starts + k] for k in range(3)], axis=1)
-        cell_block = np.rint(vtu.point_data["block_id"][corners[:, 0]]).astype(int)
-        chosen = corners[cell_block == block]
-        p = vtu.points
-        a = p[chosen[:, 1]] - p[chosen[:, 0]]
-        b = p[chosen[:, 2]] - p[chosen[:, 0]]
-        area = 0.5 * (a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0])
-        syy = vtu.point_data["stress_yy"][chosen[:, 0]]
-        y = p[chosen.ravel(), 1]
-        return -thickness * np.sum(area * syy) / (y.max() - y.min())
+        """The plate's force by the mean stress theorem
+        (ndda_output.plate_force, as plate_force() of tests/plates.h)."""
+        return ndda_output.plate_force(vtu, block, thickness)
 
     def evaluate(self, out_dir):
         m = ndda_output.read_table(os.path.join(out_dir, "measure_points.txt"))
