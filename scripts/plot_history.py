@@ -8,7 +8,7 @@ file (columns by their names, 'Kinetic energy (J)', 'Cracked edges', ...),
 and parameters.prm for the scene name. Writes one PNG (--out). Columns
 with the same unit share a panel, one panel per unit, time in ms on the
 shared horizontal axis; stresses are drawn in MPa, displacements and
-lengths in mm, the rest in the file's units.
+lengths in mm, angles in degrees, the rest in the file's units.
 
 --reference-expr EXPR adds a curve: a Python expression in t (time in s,
 a numpy array) with numpy as np and its functions (pi, sin, exp, sqrt,
@@ -52,8 +52,10 @@ class Column:
 
 
 def display_unit(si_unit):
-    """(unit drawn, factor from SI): MPa for Pa, mm for m."""
-    return {"Pa": ("MPa", 1e-6), "m": ("mm", 1e3)}.get(si_unit, (si_unit, 1.0))
+    """(unit drawn, factor from SI): MPa for Pa, mm for m, deg for rad."""
+    return {"Pa": ("MPa", 1e-6), "m": ("mm", 1e3), "rad": ("deg", 180 / np.pi)}.get(
+        si_unit, (si_unit, 1.0)
+    )
 
 
 def axis_label(unit):
@@ -65,6 +67,7 @@ def axis_label(unit):
         "J": "energy",
         "s": "time",
         "N/m": "stiffness",
+        "deg": "angle",
     }
     if not unit:
         return "count"
@@ -127,6 +130,51 @@ def load_columns(directory):
             f"{directory}: neither {' nor '.join(TABLES)} found"
         )
     return columns
+
+
+def add_derived(columns, specification, directory):
+    """Add the column 'NAME|UNIT|EXPR' (see the top of the file)."""
+    parts = specification.split("|", 2)
+    if len(parts) != 3 or not parts[0].strip():
+        raise ndda_output.OutputError(
+            f"--derived '{specification}': expected 'NAME|UNIT|EXPR'"
+        )
+    name, unit, expression = (part.strip() for part in parts)
+    used = []
+
+    def col(wanted):
+        column = find_column(columns, wanted, directory)
+        if used and len(column.time) != len(used[0].time):
+            raise ndda_output.OutputError(
+                f"--derived '{name}': '{wanted}' and '{used[0].name}' come "
+                f"from tables with different rows"
+            )
+        used.append(column)
+        return column.values
+
+    namespace = {n: getattr(np, n) for n in dir(np) if not n.startswith("_")}
+    namespace.update(np=np, numpy=np, col=col)
+    # t: the time of the first table read (measure_points.txt if there is
+    # one); the columns of the expression must come from that table.
+    namespace["t"] = next(iter(columns.values())).time
+    try:
+        values = eval(expression, {"__builtins__": {}}, namespace)
+    except ndda_output.OutputError:
+        raise
+    except Exception as error:  # the user's expression: say what failed
+        raise ndda_output.OutputError(
+            f"--derived '{name}': cannot evaluate '{expression}': "
+            f"{type(error).__name__}: {error}"
+        )
+    if not used:
+        raise ndda_output.OutputError(
+            f"--derived '{name}': the expression uses no col('...')"
+        )
+    base = used[0]
+    values = np.broadcast_to(np.asarray(values, dtype=float), base.time.shape)
+    column = Column(name, base.table_path, base.time, values, unit)
+    column.label = name
+    columns[name] = column
 
 
 def find_column(columns, wanted, directory):
@@ -196,8 +244,23 @@ def main():
     )
     parser.add_argument(
         "--reference-column",
+        action="append",
+        default=[],
         help="the column the references go with (axis, unit, printed "
-        "difference); default the first --column",
+        "difference); default the first --column; once per "
+        "--reference-expr to pair them one by one",
+    )
+    parser.add_argument(
+        "--derived",
+        action="append",
+        default=[],
+        help="a computed column 'NAME|UNIT|EXPR', EXPR in t and "
+        "col('column name') (see the top of the file)",
+    )
+    parser.add_argument(
+        "--mark-first-crack",
+        action="store_true",
+        help="a dotted line at the first crack (statistics: 'Cracked edges')",
     )
     parser.add_argument("--tmin", help="start of the time range (s, or 2.1ms, 210us)")
     parser.add_argument("--tmax", help="end of the time range (s, or 2.1ms, 210us)")
@@ -213,9 +276,16 @@ def main():
         parser.error(f"--tmin/--tmax: {error}")
     if len(args.reference_label) > len(args.reference_expr):
         parser.error("more --reference-label than --reference-expr")
+    if len(args.reference_column) not in (0, 1, len(args.reference_expr)):
+        parser.error(
+            f"{len(args.reference_column)} --reference-column for "
+            f"{len(args.reference_expr)} --reference-expr: give one, or one each"
+        )
 
     try:
         columns = load_columns(args.directory)
+        for specification in args.derived:
+            add_derived(columns, specification, args.directory)
         if args.list:
             for column in columns.values():
                 unit = f" [{column.si_unit}]" if column.si_unit else ""
@@ -226,19 +296,26 @@ def main():
         if not args.out:
             parser.error("--out FILE.png is needed")
         chosen = [find_column(columns, name, args.directory) for name in args.column]
-        reference_column = (
-            find_column(columns, args.reference_column, args.directory)
-            if args.reference_column
-            else chosen[0]
+        names = args.reference_column or [chosen[0].name]
+        if len(names) == 1:
+            names = names * len(args.reference_expr)
+        reference_columns = [find_column(columns, n, args.directory) for n in names]
+        for column in reference_columns:
+            if column not in chosen:
+                chosen.append(column)
+        crack = (
+            ndda_output.first_crack_time(args.directory)
+            if args.mark_first_crack
+            else None
         )
-        if reference_column not in chosen:
-            chosen.append(reference_column)
-        plot(args, chosen, reference_column, t_min, t_max)
+        if args.mark_first_crack and crack is None:
+            print("plot_history: no crack in this run; nothing to mark")
+        plot(args, chosen, reference_columns, t_min, t_max, crack)
     except ndda_output.OutputError as error:
         sys.exit(f"plot_history: {error}")
 
 
-def plot(args, chosen, reference_column, t_min, t_max):
+def plot(args, chosen, reference_columns, t_min, t_max, crack=None):
     import matplotlib
 
     matplotlib.use("Agg")
@@ -277,10 +354,14 @@ def plot(args, chosen, reference_column, t_min, t_max):
         high = max(high, column.time[keep][-1])
 
     if args.reference_expr:
-        axes = panels[units.index(reference_column.unit)]
-        t = np.linspace(low, high, 1000)
+        t = np.linspace(low, high, 2000)
         styles = ["--", ":", "-."]
+        per_panel = {}
         for i, expression in enumerate(args.reference_expr):
+            reference_column = reference_columns[i]
+            axes = panels[units.index(reference_column.unit)]
+            style = styles[per_panel.setdefault(reference_column.unit, 0) % len(styles)]
+            per_panel[reference_column.unit] += 1
             label = (
                 args.reference_label[i]
                 if i < len(args.reference_label)
@@ -289,13 +370,22 @@ def plot(args, chosen, reference_column, t_min, t_max):
             axes.plot(
                 t * 1e3,
                 evaluate(expression, t) * reference_column.scale,
-                styles[i % len(styles)],
+                style,
                 color="black",
                 linewidth=1.2,
                 label=label,
             )
             report_difference(expression, reference_column, low, high)
 
+    if crack is not None and low <= crack <= high:
+        for i, axes in enumerate(panels):
+            axes.axvline(
+                crack * 1e3,
+                color="tab:red",
+                linestyle=":",
+                linewidth=1.2,
+                label=f"first crack, {crack * 1e3:.4g} ms" if i == 0 else None,
+            )
     for unit, axes in zip(units, panels):
         axes.set_ylabel(axis_label(unit))
         axes.grid(True, linewidth=0.4, alpha=0.5)
