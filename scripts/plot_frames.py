@@ -10,7 +10,7 @@ file for the 'Cracked edges' column if there is one, and parameters.prm
 for the scene name. Writes one PNG per chosen frame, PREFIX_NNNNN.png
 (NNNNN the frame's number in solution.pvd) or, with --auto,
 PREFIX_start.png, PREFIX_first_crack.png, PREFIX_propagation.png and
-PREFIX_end.png.
+PREFIX_end.png, or with --times and --names, PREFIX_NAME.png.
 
 Run it with Debian's Python (python3-numpy, python3-matplotlib):
 
@@ -51,6 +51,13 @@ What a frame shows:
   the statistics file's 'Cracked edges' count so that the count is never
   missed.
 
+--initial-cracks draws the scene's pre-existing cracks ('Cracks' of the
+blocks in parameters.prm) on the frames at t = 0, where their faces still
+coincide.
+
+--stretch S draws y S times larger than x, for a thin bar along x (the
+title says so); --xlim/--ylim zoom in.
+
 --auto picks the first frame, the first frame with a crack (the first
 output at or after the first step with 'Cracked edges' > 0 in the
 statistics file; without that column, the first frame whose outline has
@@ -74,6 +81,7 @@ TRIANGLE_TYPES = (5, 22, 69)
 
 PRINCIPAL = "principal"
 CRACK_COLOUR = "#00a000"
+INITIAL_CRACK_COLOUR = "#8b00c0"
 
 
 # ----------------------------------------------------------------- frames
@@ -274,6 +282,25 @@ def auto_selection(frames, history, outline_growth):
     return unique
 
 
+def initial_cracks(directory):
+    """The pre-existing cracks of the scene: every 'Geometry/<block>/Cracks'
+    entry of the run's parameters.prm ('x0, y0, x1, y1; ...'), as an
+    array of segments (n x 2 x 2, m)."""
+    parameters = ndda_output.read_parameters(directory)
+    segments = []
+    for key, value in parameters.items():
+        if key.startswith("Geometry/") and key.endswith("/Cracks") and value.strip():
+            for text in value.split(";"):
+                numbers = [float(v) for v in text.split(",")]
+                if len(numbers) != 4:
+                    raise ndda_output.OutputError(
+                        f"{directory}/parameters.prm: '{key}' has a crack "
+                        f"'{text.strip()}', not 'x0, y0, x1, y1'"
+                    )
+                segments.append(np.reshape(numbers, (2, 2)))
+    return np.array(segments).reshape(-1, 2, 2)
+
+
 # --------------------------------------------------------------- drawing
 def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
     import matplotlib
@@ -286,7 +313,7 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
     x, y = frame.xy[:, 0] * 1e3, frame.xy[:, 1] * 1e3
     (x0, x1), (y0, y1) = box
     width, height = x1 - x0, y1 - y0
-    figure, axes, bar_axes, wide = layout(plt, width, height, args)
+    figure, axes, bar_axes, wide = layout(plt, width, height * args.stretch, args)
     triangulation = Triangulation(x, y, frame.pieces)
     cell_values = frame.values[frame.pieces]
     vmin, vmax = limits
@@ -326,16 +353,28 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
             )
         )
 
-    axes.set_aspect("equal")
+    if args.initial_cracks and frame.time <= 0:
+        cracks = initial_cracks(args.directory)
+        if len(cracks):
+            axes.add_collection(
+                LineCollection(
+                    cracks * 1e3, colors=INITIAL_CRACK_COLOUR, linewidths=1.6, zorder=5
+                )
+            )
+    axes.set_aspect(args.stretch)
     axes.set_xlim(x0, x1)
     axes.set_ylim(y0, y1)
     axes.set_xlabel("x (mm)")
     axes.set_ylabel("y (mm)")
     title = f"{scene}, t = {frame.time * 1e3:.4g} ms"
+    if args.stretch != 1:
+        title += f", y drawn {args.stretch:g} times larger than x"
     if n_cracked is not None:
         title += f", {n_cracked} cracked edges"
     if len(new_edges):
         title += "\nblack: block outlines, green: crack faces"
+    elif args.initial_cracks and frame.time <= 0 and len(initial_cracks(args.directory)):
+        title += "\npurple: pre-existing cracks"
     axes.set_title(title, fontsize=10)
     low, high = np.min(frame.values), np.max(frame.values)
     extend = {(False, False): "neither", (True, False): "min", (False, True): "max"}
@@ -452,6 +491,11 @@ def main():
         "--out", required=True, help="prefix of the PNG files (PREFIX_....png)"
     )
     parser.add_argument(
+        "--names",
+        help="with --times: comma-separated names of the frames, one per "
+        "time (PREFIX_NAME.png instead of PREFIX_NNNNN.png)",
+    )
+    parser.add_argument(
         "--field",
         default=PRINCIPAL,
         help="point field to colour the cells by: 'principal' (default: the "
@@ -475,7 +519,21 @@ def main():
     parser.add_argument("--xlim", type=parse_range, help="x range in mm: low,high")
     parser.add_argument("--ylim", type=parse_range, help="y range in mm: low,high")
     parser.add_argument(
+        "--stretch",
+        type=float,
+        default=1.0,
+        help="draw y this many times larger than x (a thin bar: 10); "
+        "default 1, equal scales",
+    )
+    parser.add_argument(
         "--mesh", action="store_true", help="also draw the cells' edges in grey"
+    )
+    parser.add_argument(
+        "--initial-cracks",
+        action="store_true",
+        help="on frames at t = 0, draw the pre-existing cracks of the scene "
+        "(Geometry/*/Cracks in parameters.prm) in purple: their faces "
+        "coincide, the outline cannot show them",
     )
     parser.add_argument(
         "--cmap", default="RdBu_r", help="diverging colour map (default RdBu_r)"
@@ -497,12 +555,17 @@ def main():
         "--size", type=float, default=6.0, help="figure width in inches (default 6)"
     )
     args = parser.parse_args()
+    if not args.stretch > 0:
+        parser.error(f"--stretch {args.stretch}: must be positive")
     if not 0 < args.percentile <= 100:
         parser.error(f"--percentile {args.percentile}: must be in (0, 100]")
     try:
         times = [ndda_output.parse_time(t) for t in (args.times or "").split(",") if t]
     except ValueError as error:
         parser.error(f"--times: {error}")
+    names = [n.strip() for n in args.names.split(",")] if args.names else None
+    if names is not None and (args.auto or len(names) != len(times)):
+        parser.error("--names needs --times and one name per time")
 
     try:
         pvd = os.path.join(args.directory, "solution.pvd")
@@ -530,9 +593,9 @@ def main():
             )
         else:
             chosen = []
-            for time in times:
+            for k, time in enumerate(times):
                 index = closest_frame(files, time)
-                chosen.append((f"{index:05d}", index))
+                chosen.append((names[k] if names else f"{index:05d}", index))
 
         limits = colour_limits(frames, args)
         box = bounding_box(frames, args)
