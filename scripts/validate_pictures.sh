@@ -125,7 +125,7 @@ name=bar_spalling
 run_scene $name 1e-5
 frames $name --auto --field stress_xx --xlim=880,1005 --ylim=-10,40 \
   --out "$gallery/$name"
-frames $name --times 240us --names tension --field stress_xx --stretch 8 \
+frames $name --times 250us --names reflection --field stress_xx --stretch 8 \
   --size 9 --out "$gallery/$name"
 history $name \
   --column "point 2 v_x" --column "point 2 sigma_xx" \
