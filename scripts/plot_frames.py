@@ -36,8 +36,11 @@ What a frame shows:
   block id): the vertices of an unbroken mesh are written bit for bit the
   same by every cell that shares them, while the two copies of a vertex
   split by a crack move apart.
-- Cracks in green: the outline edges of a frame that were not outline
-  edges before the first crack (in the first frame, or in any frame
+- Cracks in green: the crack faces ndda writes beside each frame
+  (cracks-NNNNN.txt: every crack face, pre-existing or new, on the present
+  geometry), which shows fresh cracks whose faces still touch. For runs
+  without those files (older ndda): the outline edges of a frame that
+  were not outline edges before the first crack (in the first frame, or in any frame
   before the statistics file's 'Cracked edges' becomes non-zero: the
   faces of a pre-existing crack coincide in the first frame and move
   apart under load). They are matched by their midpoints in the reference
@@ -68,6 +71,7 @@ without cracks gets the first, middle and last frames.
 
 import argparse
 import os
+import re
 import sys
 
 import numpy as np
@@ -302,6 +306,29 @@ def initial_cracks(directory):
 
 
 # --------------------------------------------------------------- drawing
+def crack_segments(frame):
+    """The crack faces ndda wrote next to this frame (cracks-NNNNN.txt
+    beside solution-NNNNN.vtu, x1 y1 x2 y2 in m on the present geometry),
+    as an array of shape (n, 2, 2); None if the run wrote none (no crack
+    yet, or an ndda older than the file)."""
+    name = os.path.basename(frame.path)
+    match = re.fullmatch(r"solution-(\d+)\.vtu", name)
+    if not match:
+        return None
+    path = os.path.join(os.path.dirname(frame.path), f"cracks-{match.group(1)}.txt")
+    if not os.path.exists(path):
+        return None
+    try:
+        data = np.loadtxt(path, ndmin=2)
+    except ValueError as error:
+        raise ndda_output.OutputError(f"{path}: {error}")
+    if data.size == 0:
+        return np.zeros((0, 2, 2))
+    if data.shape[1] != 4:
+        raise ndda_output.OutputError(f"{path}: expected 4 columns, got {data.shape[1]}")
+    return data.reshape(-1, 2, 2)
+
+
 def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
     import matplotlib
 
@@ -346,7 +373,15 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
             segments(frame.outline), colors="black", linewidths=1.0, zorder=3
         )
     )
-    if len(new_edges):
+    # The crack faces: from ndda's cracks file when there is one (it shows
+    # fresh cracks whose faces still touch), else the outline edges that
+    # are new since the start.
+    faces = crack_segments(frame)
+    if faces is not None and len(faces):
+        axes.add_collection(
+            LineCollection(faces * 1e3, colors=CRACK_COLOUR, linewidths=1.6, zorder=4)
+        )
+    elif faces is None and len(new_edges):
         axes.add_collection(
             LineCollection(
                 segments(new_edges), colors=CRACK_COLOUR, linewidths=1.6, zorder=4

@@ -2212,6 +2212,21 @@ namespace ndda
         pvd_records.emplace_back(time, name);
         std::ofstream pvd(out_parameters.directory + "solution.pvd");
         DataOutBase::write_pvd_record(pvd, pvd_records);
+        // The crack faces as segments on the present geometry, for
+        // pictures: the faces of a fresh crack touch, and a VTU file
+        // cannot tell them from an unbroken edge.
+        const auto &block_mesh = mesh.get_block_mesh();
+        if (!block_mesh.crack_edges.empty())
+          {
+            std::ofstream cracks(out_parameters.directory + "cracks-" + number +
+                                 ".txt");
+            cracks << "# crack faces at t = " << time
+                   << " s: x1 y1 x2 y2 (m), one face per line\n"
+                   << std::setprecision(10);
+            for (const auto &e : block_mesh.crack_edges)
+              cracks << block_mesh.vertices[e[0]] << ' '
+                     << block_mesh.vertices[e[1]] << '\n';
+          }
       }
     if (out_parameters.write_hdf5)
       {
