@@ -406,7 +406,7 @@ def draw(frame, args, scene, limits, box, new_edges, n_cracked, path):
         title += f", y drawn {args.stretch:g} times larger than x"
     if n_cracked is not None:
         title += f", {n_cracked} cracked edges"
-    if len(new_edges):
+    if len(new_edges) or (faces is not None and len(faces)):
         title += "\nblack: block outlines, green: crack faces"
     elif args.initial_cracks and frame.time <= 0 and len(initial_cracks(args.directory)):
         title += "\npurple: pre-existing cracks"
