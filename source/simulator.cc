@@ -2155,20 +2155,21 @@ namespace ndda
     // picture cannot tell them from an unbroken edge. A crack face is a
     // side of its cell with the same vertex order.
     Vector<double> crack_faces(n_cells);
-    {
-      const auto &block_mesh = mesh.get_block_mesh();
-      std::map<std::pair<unsigned int, unsigned int>, unsigned int> side_of;
-      for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
-        for (unsigned int j = 0; j < 3; ++j)
-          side_of[{block_mesh.triangles[c][j],
-                   block_mesh.triangles[c][(j + 1) % 3]}] = c;
-      for (const auto &e : block_mesh.crack_edges)
-        {
-          const auto side = side_of.find({e[0], e[1]});
-          if (side != side_of.end() && side->second < n_cells)
-            crack_faces[side->second] += 1.;
-        }
-    }
+    if (!mesh.get_block_mesh().crack_edges.empty())
+      {
+        const auto &block_mesh = mesh.get_block_mesh();
+        std::map<std::pair<unsigned int, unsigned int>, unsigned int> side_of;
+        for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
+          for (unsigned int j = 0; j < 3; ++j)
+            side_of[{block_mesh.triangles[c][j],
+                     block_mesh.triangles[c][(j + 1) % 3]}] = c;
+        for (const auto &e : block_mesh.crack_edges)
+          {
+            const auto side = side_of.find({e[0], e[1]});
+            if (side != side_of.end() && side->second < n_cells)
+              crack_faces[side->second] += 1.;
+          }
+      }
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
