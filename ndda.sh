@@ -69,10 +69,13 @@ case "${1:-}" in
     py=/usr/bin/python3
     echo "ndda.sh: running the test suite (every validation case)"
     (cd "$build_dir" && ctest --output-on-failure -j"$jobs" -E '^validation_page$')
-    echo "ndda.sh: the long validation runs (finer meshes; about 10 minutes)"
+    echo "ndda.sh: the long validation runs (finer meshes; about 30 minutes)"
     mkdir -p "$build_dir/tests/inclined_crack_fine"
     (cd "$build_dir/tests/inclined_crack_fine" &&
       ../test_inclined_crack 0.00125 > screen-output 2>&1)
+    mkdir -p "$build_dir/tests/uniaxial_compression_fine"
+    (cd "$build_dir/tests/uniaxial_compression_fine" &&
+      ../test_uniaxial_compression 0.004 > screen-output 2>&1)
     echo "ndda.sh: the benchmarks whose figures the page quotes"
     for b in "step_vs_plain_solve 1e4 1e5" "contact_step" "crack_event 1e4 1e5"; do
       set -- $b
