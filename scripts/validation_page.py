@@ -110,35 +110,38 @@ def fill(template, values, template_path):
 
 def page_values(template, page, template_path, page_path):
     """KEY -> text as it stands in the page, matching the page against the
-    template with each placeholder as a wildcard."""
-    pattern, keys, position = [], [], 0
-    for m in PLACEHOLDER.finditer(template):
-        pattern.append(re.escape(template[position : m.start()]))
-        pattern.append(r"(.+?)")
-        keys.append((m.group(1), m.group(2)))
-        position = m.end()
-    pattern.append(re.escape(template[position:]))
-    match = re.fullmatch("".join(pattern), page, flags=re.DOTALL)
-    if not match:
-        # Name the first line where the two differ, outside placeholders.
-        for number, (t, p) in enumerate(
-            zip(template.splitlines(), page.splitlines()), start=1
-        ):
-            line_pattern = PLACEHOLDER.sub("\0", t)
-            line_pattern = re.escape(line_pattern).replace("\\\0", ".+?")
-            line_pattern = line_pattern.replace("\0", ".+?")
-            if not re.fullmatch(line_pattern, p):
-                raise PageError(
-                    f"{page_path}:{number} does not match "
-                    f"{template_path}:{number}:\n  page:     {p}\n"
-                    f"  template: {t}\nRegenerate the page with "
-                    "./ndda.sh validate (or scripts/validation_page.py)."
-                )
+    template line by line, each placeholder a wildcard within its line
+    (values are one line each; a wildcard that may cross lines makes a
+    stale page backtrack without end)."""
+    template_lines, page_lines = template.splitlines(), page.splitlines()
+    if len(template_lines) != len(page_lines):
         raise PageError(
-            f"{page_path} is not {template_path} filled in (different "
-            "length); regenerate it with ./ndda.sh validate."
+            f"{page_path} has {len(page_lines)} lines, {template_path} "
+            f"{len(template_lines)}: the page is not the template filled in; "
+            "regenerate it with ./ndda.sh validate (or "
+            "scripts/validation_page.py)."
         )
-    return [(loose, key, match.group(i + 1)) for i, (loose, key) in enumerate(keys)]
+    values = []
+    for number, (t, p) in enumerate(zip(template_lines, page_lines), start=1):
+        pattern, keys, position = [], [], 0
+        for m in PLACEHOLDER.finditer(t):
+            pattern.append(re.escape(t[position : m.start()]))
+            pattern.append(r"(.+?)")
+            keys.append((m.group(1), m.group(2)))
+            position = m.end()
+        pattern.append(re.escape(t[position:]))
+        match = re.fullmatch("".join(pattern), p)
+        if not match:
+            raise PageError(
+                f"{page_path}:{number} does not match "
+                f"{template_path}:{number}:\n  page:     {p}\n"
+                f"  template: {t}\nRegenerate the page with "
+                "./ndda.sh validate (or scripts/validation_page.py)."
+            )
+        values += [
+            (loose, key, match.group(i + 1)) for i, (loose, key) in enumerate(keys)
+        ]
+    return values
 
 
 def numbers_in(text):

@@ -1372,6 +1372,29 @@ namespace ndda
     if (max_increment > control.max_displacement_ratio * scene_half_height)
       return StepResult::too_large;
 
+    // A cell that the increment turns inside out: no strain measure of the
+    // linear update holds there (its strain energy changes sign). Only a
+    // diverging motion or a step far too large does this; cut the step.
+    {
+      const auto &block_mesh = mesh.get_block_mesh();
+      for (const auto &t : block_mesh.triangles)
+        {
+          std::array<Point<dim>, 3> now, next;
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              now[k] = next[k] = block_mesh.vertices[t[k]];
+              for (unsigned int c = 0; c < dim; ++c)
+                next[k][c] += d[vertex_dofs[t[k]][c]];
+            }
+          const auto twice_area = [](const std::array<Point<dim>, 3> &p) {
+            return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+                   (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+          };
+          if (twice_area(now) * twice_area(next) <= 0)
+            return StepResult::inverted;
+        }
+    }
+
     if (with_contact &&
         parameters.contact.penalty_method ==
           parameters::PenaltyMethod::automatic &&
@@ -2002,6 +2025,9 @@ namespace ndda
                      std::to_string(
                        parameters.contact.max_open_close_iterations) +
                      " solves" :
+                 result == StepResult::inverted ?
+                   std::string("a cell still turns inside out (the motion "
+                               "diverges or the step is far too large)") :
                    "the largest displacement increment " +
                      Utilities::to_string(max_increment) +
                      " m still exceeds Control/Maximum displacement ratio " +
@@ -2110,6 +2136,24 @@ namespace ndda
             statistics.set_precision(c, 6);
           }
       }
+
+    // Each step starts at twice the last step size, so a motion that needs
+    // a cut in step after step can crawl on at a small step size without
+    // ever falling below the limit above. Stop once 1000 steps in a row
+    // were below 1e-3 of the nominal step (all of them together cover less
+    // than one nominal step); the statistics of this step are written.
+    n_crawling_steps =
+      dt < 1e-3 * parameters.control.time_step ? n_crawling_steps + 1 : 0;
+    AssertThrow(n_crawling_steps < 1000,
+                ExcMessage(
+                  "Step " + std::to_string(step_number) +
+                  " at t = " + Utilities::to_string(time) +
+                  ": 1000 steps in a row were cut below 1e-3 of "
+                  "Control/Time step (the last one " +
+                  Utilities::to_string(dt) +
+                  " s); the run crawls. The motion is diverging or the "
+                  "contacts chatter: look at the last output and the "
+                  "statistics file; see doc/contact.md, 'Known limits'."));
   }
 
 

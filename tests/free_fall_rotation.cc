@@ -14,6 +14,7 @@
 // the measured area change after one turn's time, checks it against this
 // prediction, and checks that it halves when the step is halved.
 
+#include <cctype>
 #include <cmath>
 
 #include "tests.h"
@@ -52,6 +53,26 @@ subsection Output
   set Measure points = 0.5, 0
 end
 )";
+
+namespace
+{
+  /** The additional information of a deal.II exception on one line, from
+   * its "Step N" on (deal.II wraps the text). */
+  std::string
+  error_message(const std::exception &e)
+  {
+    std::string       text = e.what();
+    const std::size_t step = text.find("Step ");
+    text                   = text.substr(step == std::string::npos ? 0 : step);
+    std::string line;
+    for (const char c : text)
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        line += c;
+      else if (!line.empty() && line.back() != ' ')
+        line += ' ';
+    return line.substr(0, line.find(" Stacktrace:"));
+  }
+} // namespace
 
 int
 main(int argc, char **argv)
@@ -154,5 +175,105 @@ main(int argc, char **argv)
               "area change is not first order in the step size");
       previous_change = change;
     }
+
+  // A step that would turn cells inside out: a soft strip 0.2 m wide and
+  // 1 m tall (E = 1e5 Pa, P-wave speed 7 m/s) squeezed sideways at the
+  // strain rate -1000/s, Newmark with a nominal step of 10 ms. The inertia
+  // term dominates, so a step moves the points by about v dt = -1000 x dt:
+  // every cell turns over unless dt < 1 ms, while the displacement limit
+  // (ratio 1: 0.5 m) allows 5 ms. The strip then collapses (it has almost
+  // no stiffness), so the run may stop with an error; no accepted step may
+  // leave a cell inside out.
+  {
+    std::string text = substitute(scene,
+                                  {{"integrator", "Newmark"},
+                                   {"dt", "0.01"},
+                                   {"end", "0.01"},
+                                   {"velocity", "-1000*x; 0"},
+                                   {"g", "0"}});
+    for (const auto &[from, to] :
+         std::vector<std::pair<std::string, std::string>>{
+           {"Maximum displacement ratio = 0.5",
+            "Maximum displacement ratio = 1\n  set Maximum step cuts = 30"},
+           {"Young's modulus = 1e9", "Young's modulus = 1e5"},
+           {"-0.5, -0.5; 0.5, -0.5; 0.5, 0.5; -0.5, 0.5",
+            "-0.1, -0.5; 0.1, -0.5; 0.1, 0.5; -0.1, 0.5"},
+           {"Measure points = 0.5, 0", "Measure points = 0.1, 0"}})
+      text.replace(text.find(from), from.size(), to);
+    ndda::Simulator<2> simulator(read_parameters(text, "inversion"));
+    simulator.setup();
+    double      first_dt = 0, smallest = 1e9;
+    std::string message = "none";
+    try
+      {
+        while (simulator.get_time() < 0.01 - 1e-12)
+          {
+            simulator.do_time_step();
+            if (first_dt == 0)
+              first_dt = simulator.get_time();
+            const auto &m = simulator.get_mesh().get_block_mesh();
+            for (const auto &t : m.triangles)
+              {
+                const auto a = m.vertices[t[1]] - m.vertices[t[0]];
+                const auto b = m.vertices[t[2]] - m.vertices[t[0]];
+                smallest     = std::min(smallest, a[0] * b[1] - a[1] * b[0]);
+              }
+          }
+      }
+    catch (const std::exception &e)
+      {
+        message = error_message(e);
+      }
+    std::cout << "squeezed soft block: first step " << first_dt
+              << " s (nominal 0.01 s), " << simulator.get_step_number()
+              << " steps to t = " << simulator.get_time()
+              << " s, smallest twice cell area " << smallest
+              << " m^2; stopped by: " << message << std::endl;
+    record("free_fall_rotation.inversion_first_dt", first_dt * 1e3, 3);
+    record("free_fall_rotation.inversion_steps", simulator.get_step_number());
+    record("free_fall_rotation.inversion_time", simulator.get_time() * 1e3, 3);
+    record("free_fall_rotation.inversion_smallest", smallest, 3);
+    check(first_dt > 0 && first_dt < 1e-3 && smallest > 0,
+          "no accepted step turns a cell inside out");
+  }
+
+  // A run that crawls: a block moving at 1 m/s whose increments may not
+  // exceed 2e-5 of half its height (1e-5 m), at a nominal step of 1 s.
+  // Every step starts at twice the last one and is cut once, to 7.6 us,
+  // far above the 1e-6 limit of the cuts; the run must stop after 1000
+  // such steps in a row (doc/contact.md, 'Known limits').
+  {
+    std::string       text  = substitute(scene,
+                                  {{"integrator", "DDA"},
+                                          {"dt", "1"},
+                                          {"end", "1"},
+                                          {"velocity", "1; 0"},
+                                          {"g", "0"}});
+    const std::string ratio = "Maximum displacement ratio = 0.5";
+    text.replace(text.find(ratio),
+                 ratio.size(),
+                 "Maximum displacement ratio = 2e-5\n"
+                 "  set Maximum step cuts = 30");
+    ndda::Simulator<2> simulator(read_parameters(text, "crawl"));
+    simulator.setup();
+    std::string message;
+    try
+      {
+        while (simulator.get_time() < 1 - 1e-12)
+          simulator.do_time_step();
+      }
+    catch (const std::exception &e)
+      {
+        message = error_message(e);
+      }
+    std::cout << "crawling run: stopped after " << simulator.get_step_number()
+              << " steps at t = " << simulator.get_time() << " s" << std::endl;
+    record("free_fall_rotation.crawl_steps", simulator.get_step_number());
+    record("free_fall_rotation.crawl_time", simulator.get_time(), 3);
+    check(message.find("the run crawls") != std::string::npos,
+          "a run whose every step is cut far below the nominal step stops");
+    check(simulator.get_step_number() == 1000,
+          "the crawling run stops after 1000 steps");
+  }
   std::cout << "OK" << std::endl;
 }

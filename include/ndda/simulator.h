@@ -420,7 +420,9 @@ namespace ndda
       /// The open-close iteration did not settle.
       not_settled,
       /// Automatic penalty: raised; solve the step again.
-      penalty_raised
+      penalty_raised,
+      /// A cell would turn inside out.
+      inverted
     };
     void
     compute_internal_force();
@@ -557,6 +559,8 @@ namespace ndda
     bool                      is_set_up              = false;
     bool                      parameters_from_file   = false;
     double                    last_dt                = 0;
+    /// Steps in a row below 1e-3 of Control/Time step (do_time_step()).
+    unsigned int n_crawling_steps = 0;
 
     /// Interior edges of the blocks whose material may fracture, and the
     /// strength of each (the weaker of its two cells' materials).

@@ -301,7 +301,11 @@ namespace ndda
                         "10",
                         Patterns::Integer(0, 50),
                         "How often one step may be halved before the run "
-                        "stops with an error.");
+                        "stops with an error. A step starts at twice the "
+                        "last one (at most Time step). The run also stops "
+                        "when the step falls below 1e-6 of Time step, or "
+                        "when 1000 steps in a row were cut below 1e-3 of "
+                        "it (a run that crawls).");
       prm.declare_entry("Element degree",
                         "1",
                         Patterns::Integer(1, 2),
