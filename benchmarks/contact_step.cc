@@ -122,6 +122,12 @@ namespace
               << "@value contact_step." << key << ".ms "
               << 1e3 * total / times.size() << "\n@value contact_step." << key
               << ".median " << 1e3 * sorted[sorted.size() / 2] << std::endl;
+    // The contact issue's goal for the coarse brick wall: a step in about
+    // 1 ms, judged here as a mean of at most 1.5 ms.
+    if (key.rfind("brick_wall__coarse", 0) == 0)
+      std::cout << "@value contact_step." << key << ".met "
+                << (1e3 * total / times.size() <= 1.5 ? "met" : "**NOT met**")
+                << std::endl;
   }
 } // namespace
 

@@ -148,6 +148,8 @@ main(int argc, char **argv)
       std::cout << std::setprecision(3) << "@value " << key << "cells "
                 << n_cells << "\n@value " << key << "crack_ms " << 1e3 * crack
                 << "\n@value " << key << "ratio " << (crack + after) / first
+                << "\n@value " << key << "met "
+                << ((crack + after) / first <= 2 ? "met" : "**NOT met**")
                 << std::setprecision(6) << std::endl;
     }
 }
