@@ -69,7 +69,7 @@ case "${1:-}" in
     py=/usr/bin/python3
     echo "ndda.sh: running the test suite (every validation case)"
     (cd "$build_dir" && ctest --output-on-failure -j"$jobs" -E '^validation_page$')
-    echo "ndda.sh: the long validation runs (finer meshes; about 30 minutes)"
+    echo "ndda.sh: the long validation runs (finer meshes; about 20 minutes)"
     mkdir -p "$build_dir/tests/inclined_crack_fine"
     (cd "$build_dir/tests/inclined_crack_fine" &&
       ../test_inclined_crack 0.00125 > screen-output 2>&1)
