@@ -38,6 +38,8 @@
 #include <string>
 #include <vector>
 
+#include "values.h"
+
 using namespace ndda::geometry;
 using dealii::Point;
 
@@ -246,10 +248,11 @@ namespace
 
 
   /**
-   * The checks that hold for every mesh of this scene.
+   * The checks that hold for every mesh of this scene; the figures for
+   * doc/validation.md are recorded under @p key.
    */
   void
-  check_mesh(const BlockMesh &mesh)
+  check_mesh(const BlockMesh &mesh, const std::string &key)
   {
     const std::vector<std::string> names      = {"ring",
                                                  "cracked",
@@ -340,6 +343,15 @@ namespace
     std::cout << "  largest relative area error " << largest_error << std::endl;
     std::cout << "  triangles at (4, 0.2) left out of the angle check: "
               << n_excluded << std::endl;
+    ndda_tests::record(key + ".blocks", unsigned(names.size()));
+    ndda_tests::record(key + ".triangles", unsigned(mesh.triangles.size()));
+    ndda_tests::record(key + ".crack_edges", unsigned(mesh.crack_edges.size()));
+    ndda_tests::record(key + ".area_error", largest_error, 2);
+    ndda_tests::record(key + ".min_angle",
+                       *std::min_element(min_angle.begin(), min_angle.end()));
+    ndda_tests::record(key + ".max_angle",
+                       *std::max_element(max_angle.begin(), max_angle.end()));
+    ndda_tests::record(key + ".excluded", n_excluded);
     check(std::abs(region_area - 1.) <= 1e-12, "rock: blocks fill the region");
     // The target number of cells is met roughly.
     check(n_cells[0] >= 200 && n_cells[0] <= 800,
@@ -373,7 +385,7 @@ main()
             << mesh.triangles.size() << " triangles, " << mesh.vertices.size()
             << " vertices, " << mesh.crack_edges.size() << " crack edges"
             << std::endl;
-  check_mesh(mesh);
+  check_mesh(mesh, "geometry_cutting.kept");
   check_crack(mesh, "rock.1", {Point<2>(0.5, 0.25), Point<2>(0.8, 0.25)}, 2, 1);
   check_crack(mesh, "cracked", {Point<2>(4, 0.2), Point<2>(4.5, 0.7)}, 2, 1);
   check_crack(mesh, "slab.0", {Point<2>(0.1, 2.8), Point<2>(0.3, 2.8)}, 1, 1);
@@ -392,7 +404,7 @@ main()
             << dropped.triangles.size() << " triangles, "
             << dropped.vertices.size() << " vertices, "
             << dropped.crack_edges.size() << " crack edges" << std::endl;
-  check_mesh(dropped);
+  check_mesh(dropped, "geometry_cutting.dropped");
   // Only the explicit crack of "cracked" is left.
   check_crack(dropped, "cracked", {Point<2>(4, 0.2), Point<2>(4.5, 0.7)}, 2, 1);
   const unsigned int cracked      = block_index(dropped, "cracked");

@@ -36,6 +36,8 @@
 #include <string>
 #include <vector>
 
+#include "values.h"
+
 using namespace ndda::geometry;
 
 namespace
@@ -190,6 +192,10 @@ namespace
               << mesh.crack_edges.size() << ", bodies " << bodies << ", area "
               << area_after << ", area change " << area_after - area_before
               << std::endl;
+    const std::string key = "geometry_split." + name;
+    ndda_tests::record(key + ".new_vertices", n_new);
+    ndda_tests::record(key + ".bodies", bodies);
+    ndda_tests::record(key + ".area_change", area_after - area_before);
 
     check(n_new == expected_new_vertices, name + ": number of new vertices");
     check(bodies == expected_bodies, name + ": number of bodies");
@@ -255,6 +261,7 @@ main()
   }
 
   // Bad input is refused with a message.
+  unsigned int n_refused = 0;
   for (const std::array<unsigned int, 2> bad :
        {std::array<unsigned int, 2>{{v(0, 0), v(2, 2)}},
         std::array<unsigned int, 2>{{v(1, 1), v(1, 1)}},
@@ -269,11 +276,13 @@ main()
       catch (const dealii::ExceptionBase &e)
         {
           thrown = true;
+          ++n_refused;
           std::cout << "refused (" << bad[0] << ", " << bad[1] << "): ";
           e.print_info(std::cout);
         }
       check(thrown, "bad edge refused");
     }
+  ndda_tests::record("geometry_split.refused", n_refused);
 
   std::cout << (n_failures == 0 ? "OK" : "FAILED") << std::endl;
   return n_failures == 0 ? 0 : 1;

@@ -23,6 +23,15 @@ if(EXPECT_FAILURE)
       message(FATAL_ERROR "the output does not contain '${_pattern}'")
     endif()
   endforeach()
+  # The refusal for doc/validation.md (scripts/validation_page.py reads
+  # '@value' lines from *.log): the exit code and ndda's message, with the
+  # test directory's path cut to 'tests/' so that it reads the same in
+  # every clone.
+  get_filename_component(_name ${WORKDIR} NAME)
+  string(REGEX MATCH "ndda: error: [^\n]*" _message "${_stderr}${_stdout}")
+  string(REGEX REPLACE "'/[^']*/(tests/[^'/]*)'" "'\\1'" _message "${_message}")
+  file(WRITE ${WORKDIR}/refusal.log
+    "@value ${_name}.exit_code ${_result}\n@value ${_name}.message ${_message}\n")
   return()
 endif()
 

@@ -22,6 +22,8 @@
 #include <sstream>
 #include <string>
 
+#include "values.h"
+
 namespace ndda_tests
 {
   /** Replace every "{key}" in @p text by its value. */
@@ -57,55 +59,6 @@ namespace ndda_tests
         std::cout << "FAILED: " << what << std::endl;
         std::exit(1);
       }
-  }
-
-  /**
-   * Print a measured figure for doc/validation.md as '@value KEY VALUE';
-   * the page's template quotes it as {{KEY}} (scripts/validation_page.py).
-   * Keys are 'test name.figure'. @p digits significant digits.
-   */
-  inline void
-  record(const std::string &key, const double value, const int digits = 4)
-  {
-    std::ostringstream text;
-    text << std::setprecision(digits) << value;
-    std::cout << "@value " << key << ' ' << text.str() << std::endl;
-  }
-
-  /** A count. */
-  inline void
-  record(const std::string &key, const unsigned int value)
-  {
-    std::cout << "@value " << key << ' ' << value << std::endl;
-  }
-
-  /** A figure that is a text, e.g. 'met' or '**NOT met**'. */
-  inline void
-  record(const std::string &key, const std::string &text)
-  {
-    std::cout << "@value " << key << ' ' << text << std::endl;
-  }
-
-  /** 'met' or '**NOT met**' for a target. */
-  inline std::string
-  met(const bool condition)
-  {
-    return condition ? "met" : "**NOT met**";
-  }
-
-  /**
-   * Print the wall time since @p start and record it as
-   * '@p test.wall_time' (s, two digits; the page quotes it as {{~...}}).
-   */
-  inline void
-  report_wall_time(const std::string                           &test,
-                   const std::chrono::steady_clock::time_point &start)
-  {
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-        .count();
-    std::cout << "wall time " << seconds << " s" << std::endl;
-    record(test + ".wall_time", seconds, 2);
   }
 
 #ifdef NDDA_TEST_DIR
