@@ -6,7 +6,8 @@ line
 
     @value KEY VALUE
 
-(tests/tests.h, ndda_tests::record). The template doc/validation.md.in is
+(tests/values.h, ndda_tests::record; the bad_input_* tests' runner writes
+them for the refusals). The template doc/validation.md.in is
 the page with each figure written as a placeholder {{KEY}}; this script
 fills them in. Nothing in the page's numbers is typed by hand.
 
