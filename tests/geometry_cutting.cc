@@ -343,7 +343,7 @@ namespace
     std::cout << "  largest relative area error " << largest_error << std::endl;
     std::cout << "  triangles at (4, 0.2) left out of the angle check: "
               << n_excluded << std::endl;
-    ndda_tests::record(key + ".blocks", unsigned(names.size()));
+    ndda_tests::record(key + ".blocks", unsigned(mesh.block_names.size()));
     ndda_tests::record(key + ".triangles", unsigned(mesh.triangles.size()));
     ndda_tests::record(key + ".crack_edges", unsigned(mesh.crack_edges.size()));
     ndda_tests::record(key + ".area_error", largest_error, 2);
