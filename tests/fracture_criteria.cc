@@ -25,7 +25,6 @@
 #include <ndda/fracture/maximum_principal_stress.h>
 #include <ndda/fracture/mohr_coulomb.h>
 
-#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -116,15 +115,7 @@ namespace
       {
         message = e.what();
       }
-    std::string folded;
-    for (const char c : message)
-      if (!std::isspace(static_cast<unsigned char>(c)))
-        folded += c;
-      else if (!folded.empty() && folded.back() != ' ')
-        folded += ' ';
-    while (!folded.empty() && folded.back() == ' ')
-      folded.pop_back();
-    return folded;
+    return ndda_tests::fold_whitespace(message);
   }
 
 

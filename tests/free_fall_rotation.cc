@@ -14,7 +14,6 @@
 // the measured area change after one turn's time, checks it against this
 // prediction, and checks that it halves when the step is halved.
 
-#include <cctype>
 #include <cmath>
 
 #include "tests.h"
@@ -61,15 +60,10 @@ namespace
   std::string
   error_message(const std::exception &e)
   {
-    std::string       text = e.what();
+    const std::string text = e.what();
     const std::size_t step = text.find("Step ");
-    text                   = text.substr(step == std::string::npos ? 0 : step);
-    std::string line;
-    for (const char c : text)
-      if (!std::isspace(static_cast<unsigned char>(c)))
-        line += c;
-      else if (!line.empty() && line.back() != ' ')
-        line += ' ';
+    const std::string line =
+      fold_whitespace(text.substr(step == std::string::npos ? 0 : step));
     return line.substr(0, line.find(" Stacktrace:"));
   }
 } // namespace

@@ -12,6 +12,7 @@
 #include <ndda/parameters/parameters.h>
 #include <ndda/simulator.h>
 
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -39,6 +40,26 @@ namespace ndda_tests
       }
     return text;
   }
+
+  /**
+   * @p text with every run of white space (deal.II's line breaks and
+   * indentation in exception messages) folded into one space, and none at
+   * either end.
+   */
+  inline std::string
+  fold_whitespace(const std::string &text)
+  {
+    std::string folded;
+    for (const char c : text)
+      if (!std::isspace(static_cast<unsigned char>(c)))
+        folded += c;
+      else if (!folded.empty() && folded.back() != ' ')
+        folded += ' ';
+    while (!folded.empty() && folded.back() == ' ')
+      folded.pop_back();
+    return folded;
+  }
+
 
   /** Parameters from the text of a .prm file. */
   inline ndda::parameters::Parameters
