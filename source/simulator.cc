@@ -284,12 +284,20 @@ namespace ndda
             const auto [component, base] = fe_ref.system_to_component_index(i);
             const Point<dim> x =
               mapping.transform_unit_to_real_cell(cell, support[base]);
-            velocity[dofs[i]] = initial_velocity[b]->value(x, component);
+            kinematics.velocity[dofs[i]] = initial_velocity[b]->value(x, component);
           }
       }
 
     compute_internal_force();
-    is_set_up = true;
+
+    time::StepController::Limits limits;
+    limits.nominal_step              = parameters.control.time_step;
+    limits.end_time                  = parameters.control.end_time;
+    limits.max_cuts                  = parameters.control.max_step_cuts;
+    limits.max_displacement_ratio    = parameters.control.max_displacement_ratio;
+    limits.max_open_close_iterations = parameters.contact.max_open_close_iterations;
+    step_controller                  = time::StepController(limits);
+    is_set_up                        = true;
   }
 
 
@@ -344,8 +352,8 @@ namespace ndda
 
     const unsigned int n = dof_handler.n_dofs();
     displacement.reinit(n);
-    velocity.reinit(n);
-    inertia_force.reinit(n);
+    kinematics.velocity.reinit(n);
+    kinematics.inertia_force.reinit(n);
     internal_force.reinit(n);
     for (unsigned int d = 0; d < dim; ++d)
       gravity_load[d].reinit(n);
@@ -651,10 +659,8 @@ namespace ndda
     settings.bond_tension =
       materials.joint.tensile_strength * materials.thickness;
     settings.bond_cohesion = materials.joint.cohesion * materials.thickness;
-    settings.average_start_and_end = parameters.control.time_integrator ==
-                                       parameters::TimeIntegrator::newmark &&
-                                     parameters.control.analysis_type !=
-                                       parameters::AnalysisType::quasi_static;
+    settings.average_start_and_end =
+      parameters.control.time_integrator->averages_contact_forces();
     contacts.initialize(edges, edge_friction, access, settings);
   }
 
@@ -1073,17 +1079,14 @@ namespace ndda
   Simulator<dim>::assemble_system_matrix(const double dt)
   {
     TimerOutput::Scope scope(timer, "system matrix");
-    const auto        &control = parameters.control;
-    double             c_mass  = 0.;
-    if (control.analysis_type != parameters::AnalysisType::quasi_static)
-      c_mass =
-        (control.time_integrator == parameters::TimeIntegrator::dda ? 2. : 4.) /
-        (dt * dt);
+    const auto        &control    = parameters.control;
+    const auto        &integrator = *control.time_integrator;
+    const double       c_mass     = integrator.mass_coefficient(dt);
     system_matrix.copy_from(stiffness_matrix);
     if (c_mass != 0.)
       system_matrix.add(c_mass, mass_matrix);
     if (has_damping)
-      system_matrix.add(1. / dt, damping_matrix);
+      system_matrix.add(integrator.damping_coefficient(dt), damping_matrix);
     if (control.constraint_method == parameters::ConstraintMethod::penalty)
       for (const auto &nc : node_constraints)
         for (unsigned int i = 0; i < dim; ++i)
@@ -1151,7 +1154,7 @@ namespace ndda
         cg.solve(m, acceleration, rhs, jacobi);
       }
     constraints.distribute(acceleration);
-    mass_matrix.vmult(inertia_force, acceleration);
+    mass_matrix.vmult(kinematics.inertia_force, acceleration);
   }
 
 
@@ -1224,15 +1227,12 @@ namespace ndda
 
 
   template <int dim>
-  typename Simulator<dim>::StepResult
-  Simulator<dim>::try_time_step(const double dt)
+  time::AttemptResult
+  Simulator<dim>::try_time_step(const double dt, Vector<double> &d)
   {
-    const auto &control = parameters.control;
-    const bool  inertia =
-      control.analysis_type != parameters::AnalysisType::quasi_static;
-    const bool newmark =
-      control.time_integrator == parameters::TimeIntegrator::newmark;
-    const bool exact =
+    const auto &control    = parameters.control;
+    const auto &integrator = *control.time_integrator;
+    const bool  exact =
       control.constraint_method == parameters::ConstraintMethod::exact;
     const bool with_contact = parameters.contact.enabled;
 
@@ -1247,14 +1247,7 @@ namespace ndda
       assemble_external_force(time + dt, step_external_force);
       rhs = step_external_force;
       rhs -= internal_force;
-      if (inertia)
-        {
-          Vector<double> mv(velocity);
-          mv *= (newmark ? 4. : 2.) / dt;
-          mass_matrix.vmult_add(rhs, mv);
-          if (newmark)
-            rhs += inertia_force;
-        }
+      integrator.add_inertia_terms(mass_matrix, kinematics, dt, rhs);
     }
 
     Vector<double> prescribed(dof_handler.n_dofs());
@@ -1267,7 +1260,7 @@ namespace ndda
                                   nc.normal[i] * nc.normal[j] :
                                   (i == j ? 1. : 0.)) *
                                penalty_stiffness * prescribed[nc.dofs[j]];
-    Vector<double> d(dof_handler.n_dofs());
+    d.reinit(dof_handler.n_dofs());
 
     // The open-close iteration (thesis 2.3.13; DESIGN decision 5): solve
     // with the springs of the present contact states, classify the
@@ -1287,7 +1280,7 @@ namespace ndda
         // F0 g1 / 2 (g1 the gap it opens): only contacts closed at both
         // ends enter the average (doc/contact.md).
         inertia_correction.reinit(dof_handler.n_dofs());
-        if (with_contact && newmark && inertia)
+        if (with_contact && integrator.averages_contact_forces())
           {
             contacts.newmark_correction(inertia_correction);
             b += inertia_correction;
@@ -1359,7 +1352,7 @@ namespace ndda
           }
       }
     if (!settled)
-      return StepResult::not_settled;
+      return time::AttemptResult::not_settled;
 
     // DDA step control: the largest nodal displacement must stay below the
     // allowed fraction of half the scene height.
@@ -1370,7 +1363,7 @@ namespace ndda
                  d[dofs[0]] * d[dofs[0]] + d[dofs[1]] * d[dofs[1]]);
     max_increment = std::sqrt(max_increment);
     if (max_increment > control.max_displacement_ratio * scene_half_height)
-      return StepResult::too_large;
+      return time::AttemptResult::too_large;
 
     // A cell that the increment turns inside out: no strain measure of the
     // linear update holds there (its strain energy changes sign). Only a
@@ -1391,7 +1384,7 @@ namespace ndda
                    (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
           };
           if (twice_area(now) * twice_area(next) <= 0)
-            return StepResult::inverted;
+            return time::AttemptResult::inverted;
         }
     }
 
@@ -1402,80 +1395,31 @@ namespace ndda
       {
         contacts.set_normal_stiffness(2. *
                                       contacts.get_settings().normal_stiffness);
-        return StepResult::penalty_raised;
+        return time::AttemptResult::penalty_raised;
       }
-
-    if (with_contact)
-      contacts.end_step(d);
-    update_state(d, dt);
-    return StepResult::accepted;
+    return time::AttemptResult::accepted;
   }
 
 
 
   template <int dim>
   void
-  Simulator<dim>::update_state(const Vector<double> &d, const double dt)
+  Simulator<dim>::commit_step(const Vector<double> &d, const double dt)
   {
     TimerOutput::Scope scope(timer, "update");
-    const auto        &control = parameters.control;
+    if (parameters.contact.enabled)
+      contacts.end_step(d);
 
-    // Velocity and acceleration at the end of the step. Both integrators
-    // give v1 = 2 d / dt - v0; Newmark also carries the acceleration.
-    if (control.analysis_type == parameters::AnalysisType::quasi_static)
-      {
-        velocity = d;
-        velocity /= dt;
-        inertia_force = 0;
-      }
-    else
-      {
-        if (control.time_integrator == parameters::TimeIntegrator::newmark)
-          {
-            // M a1 = 4 / dt^2 M (d - dt v0) - M a0, where M a0 leaves out
-            // the start forces of contacts that opened in this step (see
-            // try_time_step()).
-            Vector<double> a(d), ma(d.size());
-            a.add(-dt, velocity);
-            a *= 4. / (dt * dt);
-            mass_matrix.vmult(ma, a);
-            ma -= inertia_force;
-            ma -= inertia_correction;
-            inertia_force = ma;
-          }
-        velocity *= -1.;
-        velocity.add(2. / dt, d);
-      }
+    // Velocity and acceleration at the end of the step.
+    parameters.control.time_integrator->update(
+      d, dt, mass_matrix, inertia_correction, kinematics);
 
     // Objective update: first turn the state of the step's start by the
     // increment's rotation, then add the increment's stress.
-    if (control.rotate_with_spin)
-      rotate_with_spin(d);
-
-    // Stresses, per quadrature point: sigma += C eps(d).
-    const unsigned int n_dofs = fe->n_dofs_per_cell();
-    const unsigned int n_q    = element_cache.n_quadrature_points();
-    const auto        &C      = element_cache.get_elasticity();
-    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
-      {
-        const unsigned int c    = cell->active_cell_index();
-        const auto        &data = element_cache[c];
-        const auto        *dofs = &cell_dof_indices[c * n_dofs];
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            SymmetricTensor<2, dim> eps;
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              eps += d[dofs[i]] * data.strain[q * n_dofs + i];
-            stress[c][q] += C[cell->material_id()] * eps;
-          }
-      }
-
-    if (control.analysis_type == parameters::AnalysisType::static_analysis)
-      {
-        // DDA statics: every step starts at rest (thesis 3.7).
-        velocity      = 0;
-        inertia_force = 0;
-      }
+    if (parameters.control.rotate_with_spin)
+      rotate_velocities(d);
+    for (unsigned int c = 0; c < stress.size(); ++c)
+      advance_cell_stress(c, d, stress[c]);
 
     for (auto &bolt : bolts)
       {
@@ -1502,53 +1446,93 @@ namespace ndda
 
 
   template <int dim>
+  std::pair<double, double>
+  Simulator<dim>::cell_rotation(const unsigned int    c,
+                                const Vector<double> &d) const
+  {
+    const unsigned int n_dofs = fe->n_dofs_per_cell();
+    const unsigned int n_q    = element_cache.n_quadrature_points();
+    const auto        &data   = element_cache[c];
+    const auto        *dofs   = &cell_dof_indices[c * n_dofs];
+    double             omega = 0, area = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          omega += d[dofs[i]] * data.spin[q * n_dofs + i] * data.weight[q];
+        area += data.weight[q];
+      }
+    return {omega, area};
+  }
+
+
+
+  template <int dim>
   void
-  Simulator<dim>::rotate_with_spin(const Vector<double> &d)
+  Simulator<dim>::advance_cell_stress(
+    const unsigned int                    c,
+    const Vector<double>                 &d,
+    std::vector<SymmetricTensor<2, dim>> &sigma) const
+  {
+    // The small-rotation update moves points along straight lines; turn
+    // each cell's stress by the cell's rotation in the increment
+    // (Jaumann-like, sigma <- R sigma R^T) before adding the increment's
+    // stress, sigma += C eps(d). See doc/theory.md.
+    if (parameters.control.rotate_with_spin)
+      {
+        const auto [rotation, area] = cell_rotation(c, d);
+        const double omega          = rotation / area;
+        if (omega != 0.)
+          {
+            const auto [cs, sn] = cos_sin(omega);
+            for (auto &s : sigma)
+              {
+                const double xx = s[0][0], yy = s[1][1], xy = s[0][1];
+                s[0][0] = cs * cs * xx - 2 * cs * sn * xy + sn * sn * yy;
+                s[1][1] = sn * sn * xx + 2 * cs * sn * xy + cs * cs * yy;
+                s[0][1] = cs * sn * (xx - yy) + (cs * cs - sn * sn) * xy;
+              }
+          }
+      }
+    const unsigned int n_dofs = fe->n_dofs_per_cell();
+    const auto        &data   = element_cache[c];
+    const auto        *dofs   = &cell_dof_indices[c * n_dofs];
+    const auto        &C = element_cache.get_elasticity()[cell_material[c]];
+    for (unsigned int q = 0; q < sigma.size(); ++q)
+      {
+        SymmetricTensor<2, dim> eps;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          eps += d[dofs[i]] * data.strain[q * n_dofs + i];
+        sigma[q] += C * eps;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::rotate_velocities(const Vector<double> &d)
   {
     // The small-rotation update moves points along straight lines: a
     // spinning block would not turn its velocity. As DDA does with its
     // block rotation, turn the velocity (and inertia force) of each block
     // relative to its centre of mass by the block's rotation in the
-    // increment, and each cell's stress by the cell's rotation
-    // (Jaumann-like); the internal force follows from the turned stresses.
+    // increment; the cells' stresses turn in advance_cell_stress().
     // Only the part relative to the centre of mass turns: a block that
     // falls while it vibrates (its spin oscillating) keeps its momentum,
     // where turning whole nodal velocities by nodal spins made it drift
     // sideways by metres. See doc/theory.md.
     const unsigned int        n_dofs   = fe->n_dofs_per_cell();
-    const unsigned int        n_q      = element_cache.n_quadrature_points();
     const unsigned int        n_blocks = mesh.n_blocks();
     std::vector<double>       block_spin(n_blocks), block_area(n_blocks);
     std::vector<unsigned int> node_block(node_dofs.size(),
                                          numbers::invalid_unsigned_int);
     for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
       {
-        const auto &data  = element_cache[c];
-        const auto *dofs  = &cell_dof_indices[c * n_dofs];
-        double      omega = 0, area = 0;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              omega += d[dofs[i]] * data.spin[q * n_dofs + i] * data.weight[q];
-            area += data.weight[q];
-          }
-        const unsigned int b = mesh.block_of_cell(c);
+        const auto [omega, area] = cell_rotation(c, d);
+        const unsigned int b     = mesh.block_of_cell(c);
         block_spin[b] += omega;
         block_area[b] += area;
-        omega /= area;
-        if (omega != 0.)
-          {
-            // sigma <- R sigma R^T
-            const auto [cs, sn] = cos_sin(omega);
-            for (auto &sigma : stress[c])
-              {
-                const double xx = sigma[0][0], yy = sigma[1][1],
-                             xy = sigma[0][1];
-                sigma[0][0] = cs * cs * xx - 2 * cs * sn * xy + sn * sn * yy;
-                sigma[1][1] = sn * sn * xx + 2 * cs * sn * xy + cs * cs * yy;
-                sigma[0][1] = cs * sn * (xx - yy) + (cs * cs - sn * sn) * xy;
-              }
-          }
+        const auto *dofs = &cell_dof_indices[c * n_dofs];
         for (unsigned int i = 0; i < n_dofs; ++i)
           node_block[dof_to_node[dofs[i]]] = b;
       }
@@ -1573,8 +1557,8 @@ namespace ndda
         block_mass[b] += m;
         for (unsigned int k = 0; k < dim; ++k)
           {
-            block_velocity[b][k] += m * velocity[node_dofs[n][k]];
-            block_force[b][k] += inertia_force[node_dofs[n][k]];
+            block_velocity[b][k] += m * kinematics.velocity[node_dofs[n][k]];
+            block_force[b][k] += kinematics.inertia_force[node_dofs[n][k]];
           }
       }
     for (unsigned int b = 0; b < n_blocks; ++b)
@@ -1595,15 +1579,15 @@ namespace ndda
         const auto [i, j]   = node_dofs[n];
         for (unsigned int k = 0; k < dim; ++k)
           {
-            velocity[node_dofs[n][k]] -= block_velocity[b][k];
-            inertia_force[node_dofs[n][k]] -= node_mass[n] * block_force[b][k];
+            kinematics.velocity[node_dofs[n][k]] -= block_velocity[b][k];
+            kinematics.inertia_force[node_dofs[n][k]] -= node_mass[n] * block_force[b][k];
           }
-        rotate_pair(velocity, i, j, cs, sn);
-        rotate_pair(inertia_force, i, j, cs, sn);
+        rotate_pair(kinematics.velocity, i, j, cs, sn);
+        rotate_pair(kinematics.inertia_force, i, j, cs, sn);
         for (unsigned int k = 0; k < dim; ++k)
           {
-            velocity[node_dofs[n][k]] += block_velocity[b][k];
-            inertia_force[node_dofs[n][k]] += node_mass[n] * block_force[b][k];
+            kinematics.velocity[node_dofs[n][k]] += block_velocity[b][k];
+            kinematics.inertia_force[node_dofs[n][k]] += node_mass[n] * block_force[b][k];
           }
       }
   }
@@ -1674,11 +1658,7 @@ namespace ndda
 
   template <int dim>
   std::vector<std::array<unsigned int, 2>>
-  Simulator<dim>::check_fracture(
-    const std::vector<Point<dim>>              &start_vertices,
-    const std::vector<SymmetricTensor<2, dim>> &start_stresses,
-    const double                                t0,
-    const double                                dt)
+  Simulator<dim>::check_fracture(const Vector<double> &d, const double dt)
   {
     static_assert(dim == 2, "fracture is two-dimensional");
     TimerOutput::Scope  scope(timer, "fracture check");
@@ -1687,17 +1667,31 @@ namespace ndda
     for (unsigned int c = 0; c < stress.size(); ++c)
       for (const double w : element_cache[c].weight)
         area[c] += w;
+    // The step's trial end: vertices moved by the increment, stresses
+    // advanced by it (as commit_step() will do, if no edge cracks).
+    std::vector<Point<dim>> end_vertices = block_mesh.vertices;
+    for (unsigned int v = 0; v < end_vertices.size(); ++v)
+      for (unsigned int c = 0; c < dim; ++c)
+        end_vertices[v][c] += d[vertex_dofs[v][c]];
+    std::vector<SymmetricTensor<2, dim>> end_stresses(stress.size());
+    std::vector<SymmetricTensor<2, dim>> sigma;
+    for (unsigned int c = 0; c < stress.size(); ++c)
+      {
+        sigma = stress[c];
+        advance_cell_stress(c, d, sigma);
+        end_stresses[c] = mean_stress(c, sigma);
+      }
     const auto method = parameters.fracture.edge_stress_method;
     const auto start  = fracture::edge_states(fracture_edges,
-                                             start_vertices,
+                                             block_mesh.vertices,
                                              block_mesh.triangles,
-                                             start_stresses,
+                                             cell_mean_stresses(),
                                              area,
                                              method);
     const auto end    = fracture::edge_states(fracture_edges,
-                                           block_mesh.vertices,
+                                           end_vertices,
                                            block_mesh.triangles,
-                                           cell_mean_stresses(),
+                                           end_stresses,
                                            area,
                                            method);
     const bool first_record_done =
@@ -1716,7 +1710,7 @@ namespace ndda
           continue;
         ++n_failing_edges;
         failing.emplace_back(failure.time, e);
-        const double t = t0 + failure.time * dt;
+        const double t = time + failure.time * dt;
         // The first check that finds failing edges keeps the earliest of
         // them; the re-solves after a crack do not change the record (a
         // crack can make another edge fail earlier within the same step).
@@ -1727,8 +1721,8 @@ namespace ndda
             const auto &v               = fracture_edges[e].vertices;
             first_edge_failure.mode     = failure.mode;
             first_edge_failure.time     = t;
-            first_edge_failure.location = Point<dim>(
-              0.5 * (block_mesh.vertices[v[0]] + block_mesh.vertices[v[1]]));
+            first_edge_failure.location =
+              Point<dim>(0.5 * (end_vertices[v[0]] + end_vertices[v[1]]));
           }
       }
     std::vector<std::array<unsigned int, 2>> edges;
@@ -1741,47 +1735,6 @@ namespace ndda
       if (t <= last)
         edges.push_back(fracture_edges[e].vertices);
     return edges;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::save_step_start(StepStart &start) const
-  {
-    start.displacement  = displacement;
-    start.velocity      = velocity;
-    start.inertia_force = inertia_force;
-    start.stress        = stress;
-    start.bolt_forces.clear();
-    for (const auto &bolt : bolts)
-      start.bolt_forces.push_back(bolt.axial_force);
-    start.vertices  = mesh.get_block_mesh().vertices;
-    start.contacts  = contacts;
-    start.time      = time;
-    start.load_work = load_work;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::restore_step_start(const StepStart &start)
-  {
-    displacement  = start.displacement;
-    velocity      = start.velocity;
-    inertia_force = start.inertia_force;
-    stress        = start.stress;
-    for (unsigned int b = 0; b < bolts.size(); ++b)
-      bolts[b].axial_force = start.bolt_forces[b];
-    const auto                 &now = mesh.get_block_mesh().vertices;
-    std::vector<Tensor<1, dim>> back(now.size());
-    for (unsigned int v = 0; v < now.size(); ++v)
-      back[v] = start.vertices[v] - now[v];
-    mesh.move_vertices(back);
-    contacts  = start.contacts;
-    time      = start.time;
-    load_work = start.load_work;
   }
 
 
@@ -1806,12 +1759,12 @@ namespace ndda
       return m;
     };
     const Vector<double> old_mass = lumped_mass();
-    Vector<double>       acceleration(inertia_force);
+    Vector<double>       acceleration(kinematics.inertia_force);
     for (unsigned int i = 0; i < acceleration.size(); ++i)
       if (old_mass[i] > 0.)
         acceleration[i] /= old_mass[i];
     const Vector<double> old_displacement(displacement);
-    const Vector<double> old_velocity(velocity);
+    const Vector<double> old_velocity(kinematics.velocity);
     std::vector<double>  bolt_forces;
     for (const auto &bolt : bolts)
       bolt_forces.push_back(bolt.axial_force);
@@ -1829,7 +1782,7 @@ namespace ndda
                                           now);
     };
     transfer(old_displacement, displacement);
-    transfer(old_velocity, velocity);
+    transfer(old_velocity, kinematics.velocity);
     Vector<double> new_acceleration;
     transfer(acceleration, new_acceleration);
     // Constraints, loads and measure points are found by position on the
@@ -1867,8 +1820,8 @@ namespace ndda
       dof_handler, mapping, parameters.materials, tolerance > 0., tolerance);
     build_element_matrices(false);
     update_loaded_faces();
-    inertia_force = lumped_mass();
-    inertia_force.scale(new_acceleration);
+    kinematics.inertia_force = lumped_mass();
+    kinematics.inertia_force.scale(new_acceleration);
     external_force.reinit(dof_handler.n_dofs());
     assemble_external_force(time, external_force);
     assembled_dt     = -1;
@@ -1882,12 +1835,23 @@ namespace ndda
   SymmetricTensor<2, dim>
   Simulator<dim>::mean_cell_stress(const unsigned int cell) const
   {
+    return mean_stress(cell, stress[cell]);
+  }
+
+
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  Simulator<dim>::mean_stress(
+    const unsigned int                          cell,
+    const std::vector<SymmetricTensor<2, dim>> &sigma) const
+  {
     const auto             &data = element_cache[cell];
     SymmetricTensor<2, dim> mean;
     double                  area = 0;
-    for (unsigned int q = 0; q < stress[cell].size(); ++q)
+    for (unsigned int q = 0; q < sigma.size(); ++q)
       {
-        mean += data.weight[q] * stress[cell][q];
+        mean += data.weight[q] * sigma[q];
         area += data.weight[q];
       }
     return mean / area;
@@ -1899,7 +1863,7 @@ namespace ndda
   double
   Simulator<dim>::kinetic_energy() const
   {
-    return 0.5 * mass_matrix.matrix_norm_square(velocity);
+    return 0.5 * mass_matrix.matrix_norm_square(kinematics.velocity);
   }
 
 
@@ -1918,11 +1882,59 @@ namespace ndda
             sample.displacement[e.component[i]] +=
               e.shape_values[i] * displacement[e.dofs[i]];
             sample.velocity[e.component[i]] +=
-              e.shape_values[i] * velocity[e.dofs[i]];
+              e.shape_values[i] * kinematics.velocity[e.dofs[i]];
           }
         sample.stress = mean_cell_stress(e.cell);
         measure_histories[m].push_back(sample);
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prepare_step()
+  {
+    if (step_number > 0)
+      {
+        build_element_matrices(true);
+        return;
+      }
+    build_element_matrices(false);
+    if (parameters.control.time_integrator->needs_initial_acceleration())
+      compute_initial_acceleration();
+    if (measure_histories.size() > 0 && measure_histories[0].empty())
+      record_measure_points();
+    assemble_external_force(time, external_force);
+    initial_kinetic_energy = kinetic_energy();
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::solve_step(Vector<double> &d)
+  {
+    // Contacts are detected once per step, on the geometry of its start;
+    // the detection distance covers every step size the cuts may try.
+    if (parameters.contact.enabled)
+      {
+        {
+          TimerOutput::Scope scope(timer, "contact detection");
+          contacts.begin_step(mesh.get_block_mesh().vertices,
+                              contact_threshold);
+        }
+        update_sparsity_for_contacts();
+      }
+    double              dt = step_controller.attempt_size(time);
+    time::AttemptResult result;
+    while ((result = try_time_step(dt, d)) != time::AttemptResult::accepted)
+      {
+        if (parameters.contact.enabled)
+          contacts.restart_step();
+        dt = step_controller.after_failure(result, dt, max_increment);
+      }
+    return dt;
   }
 
 
@@ -1934,155 +1946,63 @@ namespace ndda
     if (!is_set_up)
       setup();
     Timer wall;
-    if (step_number == 0)
-      {
-        build_element_matrices(false);
-        if (parameters.control.analysis_type ==
-              parameters::AnalysisType::dynamic_analysis &&
-            parameters.control.time_integrator ==
-              parameters::TimeIntegrator::newmark)
-          compute_initial_acceleration();
-        if (measure_histories.size() > 0 && measure_histories[0].empty())
-          record_measure_points();
-        time_step = parameters.control.time_step;
-        assemble_external_force(time, external_force);
-        initial_kinetic_energy = kinetic_energy();
-      }
-    else
-      build_element_matrices(true);
+    prepare_step();
+    step_controller.begin_step(step_number + 1, time);
 
     // The crack sequence (thesis 5.3): solve the step; if edges fail
-    // within it, go back to the step's start, crack the earliest of them,
-    // and solve the step again on the cracked mesh, until no edge fails
-    // (or the limit on crack events is reached).
-    const double t0      = time;
+    // within it, crack the earliest of them and solve the step again on
+    // the cracked mesh, until no edge fails (or the limit on crack events
+    // is reached). Nothing is committed before: the state is still the
+    // step's start.
     const bool splitting = fracture_enabled && parameters.fracture.split_edges;
-    StepStart  start;
-    if (splitting)
-      save_step_start(start);
-    unsigned int crack_events    = 0;
-    unsigned int cuts            = 0;
-    unsigned int raises          = 0;
-    unsigned int open_close_cuts = 0;
-    crack_limit_hit              = false;
-    double dt                    = 0;
+    // A penalty raised in a solve that a crack makes void is withdrawn.
+    const double start_stiffness =
+      parameters.contact.enabled ? contacts.get_settings().normal_stiffness :
+                                   0.;
+    unsigned int   crack_events = 0;
+    Vector<double> d;
+    double         dt = 0;
+    crack_limit_hit   = false;
     for (;;)
       {
-        // Contacts are detected once per step, on the geometry of its start;
-        // the detection distance covers every step size the cuts may try.
+        dt = solve_step(d);
+        if (fracture_edges.empty())
+          break;
+        const auto failing = check_fracture(d, dt);
+        if (!splitting || failing.empty())
+          break;
+        if (crack_events == parameters.fracture.max_crack_events)
+          {
+            crack_limit_hit = true;
+            break;
+          }
         if (parameters.contact.enabled)
-          {
-            {
-              TimerOutput::Scope scope(timer, "contact detection");
-              contacts.begin_step(mesh.get_block_mesh().vertices,
-                                  contact_threshold);
-            }
-            update_sparsity_for_contacts();
-          }
-
-        // The last step ends exactly at the end time; a remainder within
-        // round-off of the step size keeps the step size (and factorization).
-        const double remaining = parameters.control.end_time - time;
-        dt = remaining < time_step * (1. - 1e-9) ? remaining : time_step;
-        // The fracture check compares the step's end with its start.
-        std::vector<Point<dim>>              start_vertices;
-        std::vector<SymmetricTensor<2, dim>> start_stresses;
-        if (!fracture_edges.empty())
-          {
-            start_vertices = mesh.get_block_mesh().vertices;
-            start_stresses = cell_mean_stresses();
-          }
-        StepResult result = StepResult::accepted;
-        while ((result = try_time_step(dt)) != StepResult::accepted)
-          {
-            if (parameters.contact.enabled)
-              contacts.restart_step();
-            if (result == StepResult::penalty_raised)
-              {
-                ++raises;
-                AssertThrow(raises <= 30,
-                            ExcMessage(
-                              "Step " + std::to_string(step_number + 1) +
-                              " at t = " + Utilities::to_string(time) +
-                              ": the automatic penalty was doubled 30 "
-                              "times and the penetration still exceeds "
-                              "Contact/Maximum penetration ratio. "
-                              "Increase the ratio or reduce the time "
-                              "step."));
-                continue;
-              }
-            ++cuts;
-            if (result == StepResult::not_settled)
-              ++open_close_cuts;
-            AssertThrow(
-              cuts <= parameters.control.max_step_cuts,
-              ExcMessage(
-                "Step " + std::to_string(step_number + 1) +
-                " at t = " + Utilities::to_string(time) + ": " +
-                (result == StepResult::not_settled ?
-                   "the open-close iteration still changes contact states "
-                   "after Contact/Open-close iterations = " +
-                     std::to_string(
-                       parameters.contact.max_open_close_iterations) +
-                     " solves" :
-                 result == StepResult::inverted ?
-                   std::string("a cell still turns inside out (the motion "
-                               "diverges or the step is far too large)") :
-                   "the largest displacement increment " +
-                     Utilities::to_string(max_increment) +
-                     " m still exceeds Control/Maximum displacement ratio " +
-                     Utilities::to_string(
-                       parameters.control.max_displacement_ratio) +
-                     " of half the scene height") +
-                ", after " + std::to_string(cuts - 1) +
-                " step cuts. Increase 'Maximum step cuts' or the limit named, "
-                "or reduce the time step."));
-            dt *= 0.5;
-            // Steps that each need a cut shrink the step without bound when
-            // the motion diverges: stop rather than crawl.
-            AssertThrow(
-              dt >= 1e-6 * parameters.control.time_step,
-              ExcMessage("Step " + std::to_string(step_number + 1) +
-                         " at t = " + Utilities::to_string(time) +
-                         ": the step size fell below 1e-6 of Control/Time step "
-                         "after cuts in step after step; the motion is "
-                         "diverging (largest increment " +
-                         Utilities::to_string(max_increment) +
-                         " m). Look at the last output and the statistics "
-                         "file; see doc/contact.md, 'Known limits'."));
-          }
-        if (!fracture_edges.empty())
-          {
-            const auto failing =
-              check_fracture(start_vertices, start_stresses, t0, dt);
-            if (splitting && !failing.empty())
-              {
-                if (crack_events < parameters.fracture.max_crack_events)
-                  {
-                    restore_step_start(start);
-                    crack_edges(failing);
-                    ++crack_events;
-                    save_step_start(start);
-                    continue;
-                  }
-                crack_limit_hit = true;
-              }
-          }
-        break;
+          contacts.set_normal_stiffness(start_stiffness);
+        crack_edges(failing);
+        ++crack_events;
       }
-    step_cuts += cuts;
+    commit_step(d, dt);
+    step_controller.accept(dt);
     n_crack_events += crack_events;
     ++step_number;
-    last_dt = dt;
-    // After a cut, grow back towards the nominal step.
-    time_step = std::min(2. * dt, parameters.control.time_step);
     record_measure_points();
     last_step_time = wall.wall_time();
+    record_statistics();
+    // The statistics of this step are recorded before a crawling run is
+    // stopped.
+    step_controller.check_progress(time);
+  }
 
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_statistics()
+  {
     statistics.add_value("Time step number", step_number);
     statistics.add_value("Time (s)", time);
-    statistics.add_value("Time step size (s)", dt);
-    statistics.add_value("Step cuts", cuts);
+    statistics.add_value("Time step size (s)", step_controller.last_step_size());
+    statistics.add_value("Step cuts", step_controller.n_cuts());
     statistics.add_value("Solver iterations", last_solver_iterations);
     statistics.add_value("Matrix builds", n_matrix_rebuilds);
     statistics.add_value("Kinetic energy (J)", kinetic_energy());
@@ -2100,7 +2020,8 @@ namespace ndda
       {
         const auto &c = contacts.get_statistics();
         statistics.add_value("Open-close iterations", c.n_iterations);
-        statistics.add_value("Open-close cuts", open_close_cuts);
+        statistics.add_value("Open-close cuts",
+                             step_controller.n_open_close_cuts());
         statistics.add_value("Contact candidates", c.n_contacts);
         statistics.add_value("Closed contacts", c.n_closed);
         statistics.add_value("Sliding contacts", c.n_sliding);
@@ -2137,23 +2058,6 @@ namespace ndda
           }
       }
 
-    // Each step starts at twice the last step size, so a motion that needs
-    // a cut in step after step can crawl on at a small step size without
-    // ever falling below the limit above. Stop once 1000 steps in a row
-    // were below 1e-3 of the nominal step (all of them together cover less
-    // than one nominal step); the statistics of this step are written.
-    n_crawling_steps =
-      dt < 1e-3 * parameters.control.time_step ? n_crawling_steps + 1 : 0;
-    AssertThrow(n_crawling_steps < 1000,
-                ExcMessage(
-                  "Step " + std::to_string(step_number) +
-                  " at t = " + Utilities::to_string(time) +
-                  ": 1000 steps in a row were cut below 1e-3 of "
-                  "Control/Time step (the last one " +
-                  Utilities::to_string(dt) +
-                  " s); the run crawls. The motion is diverging or the "
-                  "contacts chatter: look at the last output and the "
-                  "statistics file; see doc/contact.md, 'Known limits'."));
   }
 
 
@@ -2223,7 +2127,7 @@ namespace ndda
                              std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data,
                              vector_kind);
-    data_out.add_data_vector(velocity,
+    data_out.add_data_vector(kinematics.velocity,
                              std::vector<std::string>(dim, "velocity"),
                              DataOut<dim>::type_dof_data,
                              vector_kind);
@@ -2388,15 +2292,17 @@ namespace ndda
             const double rate = time / std::max(wall.wall_time(), 1e-9);
             pcout << "  step " << std::setw(7) << step_number
                   << "  t = " << std::setw(12) << std::setprecision(6) << time
-                  << " s  dt = " << std::setw(10) << last_dt << " s"
-                  << "  cuts " << step_cuts << "  ETA " << std::setprecision(3)
+                  << " s  dt = " << std::setw(10)
+                  << step_controller.last_step_size() << " s"
+                  << "  cuts " << step_controller.n_total_cuts() << "  ETA " << std::setprecision(3)
                   << std::max(0., (end_time - time) / std::max(rate, 1e-300))
                   << " s" << std::endl;
             write_statistics();
           }
       }
     write_statistics();
-    pcout << "  done: " << step_number << " steps, " << step_cuts
+    pcout << "  done: " << step_number << " steps, "
+          << step_controller.n_total_cuts()
           << " step cuts, " << n_matrix_rebuilds << " matrix builds, "
           << linear_solver->n_factorizations() << " factorizations, "
           << wall.wall_time() << " s wall time" << std::endl;

@@ -27,6 +27,8 @@
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/linear_solver.h>
+#include <ndda/time/step_controller.h>
+#include <ndda/time/time_integrator.h>
 
 #include <fstream>
 #include <memory>
@@ -50,12 +52,14 @@ namespace ndda
 
   /**
    * The ndda engine: reads a scene, builds the mesh and the finite element
-   * space, and runs the time loop of thesis 3.11 (without contact and
-   * fracture, which come with later layers):
+   * space, and runs the time loop of thesis 3.11 and 5.3. Every step:
    *
-   *   for every step: loads at the step's end time, prescribed increments,
-   *   solve (K + c_M M + c_C C) d = f, step control, update stresses,
-   *   velocities and vertex positions, output.
+   *   for each attempt of the step controller: detect contacts, solve
+   *   (K + c_M M + c_C C + contact springs) d = f with the open-close
+   *   iteration, accept or cut;
+   *   crack check on the step's trial end state: if edges fail, split them
+   *   and solve the step again on the cracked mesh;
+   *   commit (velocities, stresses, vertex positions), postprocess.
    *
    * The formulas, and where they differ from the thesis, are in
    * doc/theory.md. Only dim = 2 is instantiated.
@@ -153,7 +157,7 @@ namespace ndda
     const Vector<double> &
     get_velocity() const
     {
-      return velocity;
+      return kinematics.velocity;
     }
 
     /** Stress at every quadrature point of the active cell @p cell. */
@@ -369,75 +373,82 @@ namespace ndda
     void
     setup_fracture();
 
+    /** Area-weighted mean of the stresses @p sigma at the quadrature
+     * points of @p cell. */
+    SymmetricTensor<2, dim>
+    mean_stress(const unsigned int                          cell,
+                const std::vector<SymmetricTensor<2, dim>> &sigma) const;
+
     /** Area-weighted mean stress of every cell. */
     std::vector<SymmetricTensor<2, dim>>
     cell_mean_stresses() const;
 
     /**
      * Check the fracturable edges against the fracture criterion, from the
-     * step's start (@p start_vertices, @p start_stresses) to its end (the
-     * present state); a step of length @p dt that started at @p t0.
+     * step's start (the present state) to its trial end (the increment
+     * @p d, not committed); a step of length @p dt.
      * Counts the failing edges and keeps the earliest failure of the run.
      * Detection only: the edges are not split yet.
      */
     std::vector<std::array<unsigned int, 2>>
-    check_fracture(const std::vector<Point<dim>>              &start_vertices,
-                   const std::vector<SymmetricTensor<2, dim>> &start_stresses,
-                   const double                                t0,
-                   const double                                dt);
+    check_fracture(const Vector<double> &d, const double dt);
 
-    /**
-     * The state at a step's start that a step changes: kept so that a
-     * step in which edges crack can be solved again from its start on
-     * the cracked mesh (thesis 5.3, the crack sequence).
-     */
-    struct StepStart
-    {
-      Vector<double>                                    displacement;
-      Vector<double>                                    velocity;
-      Vector<double>                                    inertia_force;
-      std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
-      std::vector<double>                               bolt_forces;
-      std::vector<Point<dim>>                           vertices;
-      contact::ContactHandler                           contacts;
-      double                                            time      = 0;
-      double                                            load_work = 0;
-    };
-
-    void
-    save_step_start(StepStart &start) const;
-    void
-    restore_step_start(const StepStart &start);
-
-
-
-    /** How one attempt at a time step ended. */
-    enum class StepResult
-    {
-      accepted,
-      /// The largest displacement exceeded the allowed ratio.
-      too_large,
-      /// The open-close iteration did not settle.
-      not_settled,
-      /// Automatic penalty: raised; solve the step again.
-      penalty_raised,
-      /// A cell would turn inside out.
-      inverted
-    };
     void
     compute_internal_force();
     void
     compute_initial_acceleration();
-    StepResult
-    try_time_step(const double dt);
+    /**
+     * Everything a step needs before its first attempt: on the first step
+     * the initial acceleration, measure points and external force; on
+     * every step the element matrices of the cells that moved.
+     */
+    void
+    prepare_step();
+    /**
+     * Solve the present step from its start state, with step cuts until
+     * an attempt is accepted: contact detection, then attempts of the
+     * step controller's sizes. Returns the accepted size; @p d holds the
+     * increment. Nothing is committed.
+     */
+    double
+    solve_step(Vector<double> &d);
+    /** One attempt of size @p dt: the open-close iteration. */
+    time::AttemptResult
+    try_time_step(const double dt, Vector<double> &d);
+    /**
+     * Accept the increment @p d of a step of length @p dt: contacts,
+     * velocity and acceleration (by the integrator), stresses, bolts, work
+     * of the loads, internal force, displacement, vertex positions, time.
+     */
+    void
+    commit_step(const Vector<double> &d, const double dt);
+    /** The rows of the statistics file for the step just committed. */
+    void
+    record_statistics();
     void
     prescribed_increment(const double    t0,
                          const double    dt,
                          Vector<double> &increment) const;
+    /**
+     * The stresses of cell @p c at the end of a step with increment @p d:
+     * the start stresses turned by the cell's rotation in the increment
+     * (with Control/Rotate with spin), plus C eps(d). @p sigma holds the
+     * start stresses on entry.
+     */
     void
-    update_state(const Vector<double> &d, const double dt);
+    advance_cell_stress(const unsigned int                    c,
+                        const Vector<double>                 &d,
+                        std::vector<SymmetricTensor<2, dim>> &sigma) const;
+    /** Rotation (rad) of cell @p c in the increment @p d, times its area,
+     * and its area. */
+    std::pair<double, double>
+    cell_rotation(const unsigned int c, const Vector<double> &d) const;
+    /**
+     * Turn the velocity and inertia force of each block relative to its
+     * centre of mass by the block's rotation in the increment @p d.
+     */
     void
-    rotate_with_spin(const Vector<double> &d);
+    rotate_velocities(const Vector<double> &d);
     void
     move_mesh(const Vector<double> &d);
     void
@@ -514,13 +525,11 @@ namespace ndda
     double                  penetration_tolerance = 0;
 
     Vector<double> displacement;
-    Vector<double> velocity;
-    /// Newmark: M times the acceleration at the present time (the
-    /// inertia force), so that contact forces can be taken out of it
-    /// without a mass solve.
-    Vector<double> inertia_force;
-    /// Newmark with contacts: the correction of the inertia force for the
-    /// step being solved (ContactHandler::newmark_correction()).
+    /// Velocity and inertia force M a, carried by the time integrator.
+    time::KinematicState kinematics;
+    /// With an integrator that averages contact forces: the correction of
+    /// the inertia force for the step being solved
+    /// (ContactHandler::newmark_correction()).
     Vector<double> inertia_correction;
     Vector<double> internal_force;
     Vector<double> gravity_load[dim];
@@ -542,9 +551,9 @@ namespace ndda
     std::vector<PointEvaluator>             measure_points;
     std::vector<std::vector<MeasureSample>> measure_histories;
 
-    double       time                        = 0;
-    double       time_step                   = 0;
-    unsigned int step_number                 = 0;
+    double               time        = 0;
+    unsigned int         step_number = 0;
+    time::StepController step_controller;
     double       stored_strain_energy        = 0;
     double       initial_strain_energy       = 0;
     bool         initial_strain_energy_known = false;
@@ -552,15 +561,11 @@ namespace ndda
     std::vector<unsigned int> cell_material;
     double                    scene_half_height      = 0;
     unsigned int              last_solver_iterations = 0;
-    unsigned int              step_cuts              = 0;
     unsigned int              n_matrix_rebuilds      = 0;
     double                    last_step_time         = 0;
     double                    max_increment          = 0;
     bool                      is_set_up              = false;
     bool                      parameters_from_file   = false;
-    double                    last_dt                = 0;
-    /// Steps in a row below 1e-3 of Control/Time step (do_time_step()).
-    unsigned int n_crawling_steps = 0;
 
     /// Interior edges of the blocks whose material may fracture, and the
     /// strength of each (the weaker of its two cells' materials).

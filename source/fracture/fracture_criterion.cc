@@ -7,7 +7,6 @@
 
 #include <ndda/fracture/fracture_criterion.h>
 
-#include <map>
 
 namespace ndda
 {
@@ -17,41 +16,16 @@ namespace ndda
 
     // The built-in criteria, see NDDA_REGISTER_FRACTURE_CRITERION.
     void
-    link_fracture_criterion_MohrCoulomb();
+    link_plugin_MohrCoulomb();
     void
-    link_fracture_criterion_MaximumPrincipalStress();
+    link_plugin_MaximumPrincipalStress();
 
-    namespace
+    void
+    FractureCriterion::link_builtin_plugins()
     {
-      struct RegistryEntry
-      {
-        std::string description;
-        void (*declare_parameters)(ParameterHandler &);
-        std::unique_ptr<FractureCriterion> (*create)();
-      };
-
-      using Registry = std::map<std::string, RegistryEntry>;
-
-      /**
-       * The registry, built on first use: registrations run during static
-       * initialization, in an order nobody controls.
-       */
-      Registry &
-      registry()
-      {
-        static Registry criteria;
-        return criteria;
-      }
-
-      /** The registry, for lookups: with the built-in criteria linked in. */
-      const Registry &
-      registered_criteria()
-      {
-        link_fracture_criterion_MohrCoulomb();
-        link_fracture_criterion_MaximumPrincipalStress();
-        return registry();
-      }
-    } // namespace
+      link_plugin_MohrCoulomb();
+      link_plugin_MaximumPrincipalStress();
+    }
 
 
 
@@ -94,14 +68,10 @@ namespace ndda
                                 void (*declare_parameters)(ParameterHandler &),
                                 std::unique_ptr<FractureCriterion> (*create)())
     {
-      AssertThrow(registry().count(name) == 0,
-                  ExcMessage("Two fracture criteria are registered under "
-                             "the name '" +
-                             name + "'."));
-      AssertThrow(name.find('|') == std::string::npos,
-                  ExcMessage("The fracture criterion name '" + name +
-                             "' contains '|'."));
-      registry()[name] = {description, declare_parameters, create};
+      FractureCriterionRegistry::add(name,
+                                     description,
+                                     declare_parameters,
+                                     create);
     }
 
 
@@ -109,10 +79,7 @@ namespace ndda
     std::vector<std::string>
     fracture_criterion_names()
     {
-      std::vector<std::string> names;
-      for (const auto &[name, entry] : registered_criteria())
-        names.push_back(name);
-      return names;
+      return FractureCriterionRegistry::names();
     }
 
 
@@ -120,10 +87,7 @@ namespace ndda
     std::string
     fracture_criterion_selection()
     {
-      std::string selection;
-      for (const std::string &name : fracture_criterion_names())
-        selection += (selection.empty() ? "" : "|") + name;
-      return selection;
+      return FractureCriterionRegistry::joined_names();
     }
 
 
@@ -131,20 +95,7 @@ namespace ndda
     std::unique_ptr<FractureCriterion>
     create_fracture_criterion(const std::string &name)
     {
-      const Registry &criteria = registered_criteria();
-      const auto      entry    = criteria.find(name);
-      if (entry == criteria.end())
-        {
-          std::string known;
-          for (const std::string &n : fracture_criterion_names())
-            known += (known.empty() ? "" : ", ") + n;
-          AssertThrow(false,
-                      ExcMessage("Fracture/Criterion: '" + name +
-                                 "' is not a fracture criterion. Known "
-                                 "criteria: " +
-                                 known + "."));
-        }
-      return entry->second.create();
+      return FractureCriterionRegistry::create(name);
     }
 
 
@@ -152,14 +103,12 @@ namespace ndda
     void
     Parameters::declare_parameters(ParameterHandler &prm)
     {
-      const Registry &criteria = registered_criteria();
-      std::string     documentation =
-        "Which criterion decides when, within a step, an interior edge of "
-        "a block cracks (thesis chapter 5, doc/fracture.md). Each "
-        "criterion reads its own entries from the subsection of its name. "
-        "The criteria:";
-      for (const auto &[name, entry] : criteria)
-        documentation += "\n\n'" + name + "': " + entry.description;
+      const std::string documentation =
+        FractureCriterionRegistry::documentation(
+          "Which criterion decides when, within a step, an interior edge of "
+          "a block cracks (thesis chapter 5, doc/fracture.md). Each "
+          "criterion reads its own entries from the subsection of its "
+          "name. The criteria:");
       prm.enter_subsection("Fracture");
       {
         prm.declare_entry("Criterion",
@@ -198,12 +147,7 @@ namespace ndda
           "step; when it is reached the step is accepted with the edges "
           "that still fail, and the statistics file says so ('Crack limit "
           "hit').");
-        for (const auto &[name, entry] : criteria)
-          {
-            prm.enter_subsection(name);
-            entry.declare_parameters(prm);
-            prm.leave_subsection();
-          }
+        FractureCriterionRegistry::declare_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -222,12 +166,8 @@ namespace ndda
         split_edges        = prm.get_bool("Split edges");
         crack_window       = prm.get_double("Crack window");
         max_crack_events   = prm.get_integer("Maximum crack events per step");
-        std::unique_ptr<FractureCriterion> created =
-          create_fracture_criterion(criterion_name);
-        prm.enter_subsection(criterion_name);
-        created->parse_parameters(prm);
-        prm.leave_subsection();
-        criterion = std::move(created);
+        criterion =
+          FractureCriterionRegistry::create_and_parse(criterion_name, prm);
       }
       prm.leave_subsection();
     }

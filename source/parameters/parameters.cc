@@ -276,12 +276,17 @@ namespace ndda
                         "over; quasi-static: no inertia, every step solves "
                         "equilibrium K d = f (every block must be "
                         "constrained).");
-      prm.declare_entry("Time integrator",
-                        "Newmark",
-                        Patterns::Selection("DDA|Newmark"),
-                        "DDA: Shi's scheme (first order, numerically "
-                        "damped); Newmark: average acceleration (second "
-                        "order, no numerical damping). See doc/theory.md.");
+      prm.declare_entry(
+        "Time integrator",
+        "Newmark",
+        Patterns::Selection(time::TimeIntegratorRegistry::joined_names()),
+        time::TimeIntegratorRegistry::documentation(
+          "The time integration scheme (a plugin, see "
+          "include/ndda/time/time_integrator.h; each reads its own entries "
+          "from the subsection of its name). With Analysis type = static "
+          "every step of the scheme starts at rest; quasi-static uses no "
+          "scheme. See doc/theory.md. The schemes:"));
+      time::TimeIntegratorRegistry::declare_parameters(prm);
       prm.declare_entry("Time step",
                         "1e-3",
                         Patterns::Double(),
@@ -359,13 +364,16 @@ namespace ndda
     {
       prm.enter_subsection("Control");
       const auto analysis = prm.get("Analysis type");
-      analysis_type   = analysis == "static"  ? AnalysisType::static_analysis :
-                        analysis == "dynamic" ? AnalysisType::dynamic_analysis :
-                                                AnalysisType::quasi_static;
-      time_integrator = prm.get("Time integrator") == "DDA" ?
-                          TimeIntegrator::dda :
-                          TimeIntegrator::newmark;
-      time_step       = prm.get_double("Time step");
+      analysis_type =
+        analysis == "static"  ? time::AnalysisType::static_analysis :
+        analysis == "dynamic" ? time::AnalysisType::dynamic_analysis :
+                                time::AnalysisType::quasi_static;
+      time_integrator_name = prm.get("Time integrator");
+      time_integrator      = time::create_time_integrator(
+        time::TimeIntegratorRegistry::create_and_parse(time_integrator_name,
+                                                       prm),
+        analysis_type);
+      time_step = prm.get_double("Time step");
       AssertThrow(time_step > 0.,
                   ExcMessage("Control/Time step: " + prm.get("Time step") +
                              " is not positive. Give a time step greater "

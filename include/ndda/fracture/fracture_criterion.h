@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ndda/base/plugin_registry.h>
 #include <ndda/fracture/edge_stress.h>
 
 #include <memory>
@@ -123,10 +124,37 @@ namespace ndda
       failure_in_step(const EdgeState &start,
                       const EdgeState &end,
                       const Strength  &strength) const = 0;
+
+      /** For messages (PluginRegistry). */
+      static const char *
+      plugin_kind()
+      {
+        return "fracture criterion";
+      }
+
+      static const char *
+      plugin_kinds()
+      {
+        return "fracture criteria";
+      }
+
+      static const char *
+      selection_entry()
+      {
+        return "Fracture/Criterion";
+      }
+
+      /** Keep the built-in criteria in every program. */
+      static void
+      link_builtin_plugins();
     };
 
+    /** The registry of fracture criteria. */
+    using FractureCriterionRegistry = PluginRegistry<FractureCriterion>;
+
     /**
-     * Register a fracture criterion under @p name. Called by
+     * Register a fracture criterion under @p name
+     * (FractureCriterionRegistry::add()). Called by
      * NDDA_REGISTER_FRACTURE_CRITERION before main() runs; throws if the
      * name is taken.
      *
@@ -197,27 +225,6 @@ namespace ndda
       parse_parameters(ParameterHandler &prm);
     };
 
-    namespace internal
-    {
-      /**
-       * Registers a criterion when it is constructed; one static object of
-       * this type per criterion, made by NDDA_REGISTER_FRACTURE_CRITERION.
-       */
-      template <typename CriterionType>
-      struct RegisterFractureCriterion
-      {
-        RegisterFractureCriterion(const char *name, const char *description)
-        {
-          register_fracture_criterion(
-            name,
-            description,
-            &CriterionType::declare_parameters,
-            []() -> std::unique_ptr<FractureCriterion> {
-              return std::make_unique<CriterionType>();
-            });
-        }
-      };
-    } // namespace internal
   }   // namespace fracture
 } // namespace ndda
 
@@ -225,24 +232,13 @@ namespace ndda
  * Register the fracture criterion @p classname (derived from
  * ndda::fracture::FractureCriterion, default constructible, with a static
  * declare_parameters(ParameterHandler &)) under @p name with
- * @p description. Put it at the end of the criterion's `.cc` file, inside
- * the namespace of @p classname.
- *
- * It also defines the function link_fracture_criterion_<classname>() in
- * that namespace. ndda is a static library: the linker takes an object file
- * from it only if something calls into that file, so the registry calls
- * this function of each built-in criterion to keep the criterion (and its
- * registration) in every program. A criterion compiled into a program or a
- * shared library does not need that.
+ * @p description: NDDA_REGISTER_PLUGIN for this interface. Put it at the
+ * end of the criterion's `.cc` file, inside the namespace of @p classname.
  */
-#define NDDA_REGISTER_FRACTURE_CRITERION(classname, name, description)   \
-  void link_fracture_criterion_##classname();                            \
-  void link_fracture_criterion_##classname()                             \
-  {}                                                                     \
-  namespace                                                              \
-  {                                                                      \
-    const ndda::fracture::internal::RegisterFractureCriterion<classname> \
-      register_fracture_criterion_##classname(name, description);        \
-  }
+#define NDDA_REGISTER_FRACTURE_CRITERION(classname, name, description) \
+  NDDA_REGISTER_PLUGIN(ndda::fracture::FractureCriterion,              \
+                       classname,                                      \
+                       name,                                           \
+                       description)
 
 #endif

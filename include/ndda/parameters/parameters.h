@@ -7,7 +7,9 @@
 
 #include <ndda/fracture/fracture_criterion.h>
 #include <ndda/geometry/block_mesh.h>
+#include <ndda/time/time_integrator.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,28 +33,6 @@ namespace ndda
    */
   namespace parameters
   {
-    /**
-     * Analysis type. Thesis 3.7: DDA statics keep the inertia terms but
-     * zero the velocity at the start of every step; dynamics carry it over.
-     * quasi-static drops inertia altogether and solves equilibrium
-     * K d = f in every step (every block must then be constrained).
-     */
-    enum class AnalysisType
-    {
-      static_analysis,
-      dynamic_analysis,
-      quasi_static
-    };
-
-    /** Time integrators, see doc/theory.md. */
-    enum class TimeIntegrator
-    {
-      /// Shi's DDA scheme: d = v0 dt + a dt^2 / 2, v1 = 2 d / dt - v0.
-      dda,
-      /// Newmark average acceleration (beta = 1/4, gamma = 1/2).
-      newmark
-    };
-
     enum class LinearSolver
     {
       umfpack,
@@ -69,8 +49,14 @@ namespace ndda
     /** subsection Control */
     struct Control
     {
-      AnalysisType     analysis_type;
-      TimeIntegrator   time_integrator;
+      /// Static, dynamic or quasi-static (time::create_time_integrator()).
+      time::AnalysisType analysis_type;
+      /// The scheme's name, `set Time integrator = ...`.
+      std::string time_integrator_name;
+      /// The integrator of the analysis: the selected scheme with its
+      /// parameters read, wrapped for a static analysis and replaced for a
+      /// quasi-static one; stateless, so it may be shared.
+      std::shared_ptr<const time::TimeIntegrator> time_integrator;
       double           time_step;
       double           end_time;
       double           max_displacement_ratio;

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_time_time_integrator_h
+#define ndda_time_time_integrator_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ndda/base/plugin_registry.h>
+
+#include <memory>
+#include <string>
+
+namespace ndda
+{
+  /**
+   * Time integration: how a step's increment d of the displacement turns
+   * into the linear system of the step and into the velocity and
+   * acceleration at its end.
+   *
+   * @ingroup time
+   */
+  namespace time
+  {
+    using dealii::ParameterHandler;
+    using dealii::SparseMatrix;
+    using dealii::Vector;
+
+    /**
+     * The kinematic state a time integrator carries from step to step, as
+     * dof vectors: the velocity v and the inertia force M a (the mass
+     * matrix times the acceleration; kept as a force so that contact forces
+     * can be taken out of it without a mass solve, and so that it carries
+     * over a crack through the lumped mass).
+     */
+    struct KinematicState
+    {
+      Vector<double> velocity;
+      Vector<double> inertia_force;
+    };
+
+    /**
+     * Interface of a time integrator. Every step solves
+     *
+     *   (K + c_M M + c_C C + contact springs) d
+     *       = f_ext(t1) - f_int + inertia terms + contact forces,
+     *
+     * for the increment d (thesis 3.15; doc/theory.md derives both built-in
+     * schemes). Everything that differs between integrators is decided
+     * here: the mass and damping coefficients, the inertia terms of the
+     * right-hand side, whether contact forces are averaged over the step,
+     * whether the run needs M a at t = 0, and the velocity and inertia force
+     * at the step's end.
+     *
+     * An integrator is a plugin (NDDA_REGISTER_PLUGIN with this interface):
+     * `set Time integrator = name` in `subsection Control` selects it, and
+     * its own entries live in `subsection Control / subsection <name>`.
+     * `Analysis type = static` and `quasi-static` are not schemes of their
+     * own: time::create_time_integrator() wraps (static) or replaces
+     * (quasi-static) the selected scheme.
+     */
+    class TimeIntegrator
+    {
+    public:
+      virtual ~TimeIntegrator() = default;
+
+      /** Read the integrator's parameters (its subsection is entered). */
+      virtual void
+      parse_parameters(ParameterHandler &prm);
+
+      /** c_M: the mass matrix's factor in the step's matrix (1/s^2). */
+      virtual double
+      mass_coefficient(const double dt) const = 0;
+
+      /**
+       * c_C: the damping (viscosity) matrix's factor in the step's matrix
+       * (1/s). The default 1/dt makes the viscous force C d / dt that of
+       * the step's mean velocity.
+       */
+      virtual double
+      damping_coefficient(const double dt) const;
+
+      /** Add the inertia terms of the step's start state to @p rhs. */
+      virtual void
+      add_inertia_terms(const SparseMatrix<double> &mass,
+                        const KinematicState       &start,
+                        const double                dt,
+                        Vector<double>             &rhs) const = 0;
+
+      /**
+       * Whether contact forces act as the mean of their values at the
+       * step's start and end (the trapezoidal rule of Newmark's average
+       * acceleration), so that the contacts must correct the inertia force
+       * for contacts that open or close within the step
+       * (contact::ContactHandler::newmark_correction()).
+       */
+      virtual bool
+      averages_contact_forces() const;
+
+      /** Whether the run starts by solving M a0 = f_ext(0) - f_int. */
+      virtual bool
+      needs_initial_acceleration() const;
+
+      /**
+       * The velocity and inertia force at the end of a step of length
+       * @p dt with increment @p d, from those at its start (@p state is
+       * overwritten). @p contact_correction is what the contacts changed in
+       * the inertia force of the step (zero unless
+       * averages_contact_forces()).
+       */
+      virtual void
+      update(const Vector<double>       &d,
+             const double                dt,
+             const SparseMatrix<double> &mass,
+             const Vector<double>       &contact_correction,
+             KinematicState             &state) const = 0;
+
+      /** For messages (PluginRegistry). */
+      static const char *
+      plugin_kind()
+      {
+        return "time integrator";
+      }
+
+      static const char *
+      plugin_kinds()
+      {
+        return "time integrators";
+      }
+
+      static const char *
+      selection_entry()
+      {
+        return "Control/Time integrator";
+      }
+
+      /** Keep the built-in integrators in every program. */
+      static void
+      link_builtin_plugins();
+    };
+
+    /** The registry of time integrators. */
+    using TimeIntegratorRegistry = PluginRegistry<TimeIntegrator>;
+
+    /** `Control/Analysis type`. */
+    enum class AnalysisType
+    {
+      /// Thesis 3.7: DDA statics keep the inertia terms but start every
+      /// step at rest.
+      static_analysis,
+      /// The velocity carries over from step to step.
+      dynamic_analysis,
+      /// No inertia: every step solves equilibrium K d = f.
+      quasi_static
+    };
+
+    /**
+     * The integrator of a scene: the scheme @p scheme (already created and
+     * with its parameters read) for a dynamic analysis, the scheme with
+     * every step started at rest for a static one, and the quasi-static
+     * integrator (no inertia; the scheme is not used) for a quasi-static
+     * one.
+     */
+    std::unique_ptr<TimeIntegrator>
+    create_time_integrator(std::unique_ptr<TimeIntegrator> scheme,
+                           const AnalysisType              analysis);
+  } // namespace time
+} // namespace ndda
+
+#endif
