@@ -569,8 +569,9 @@ namespace
       message_of([]() { create_fracture_criterion("Griffith"); });
     std::cout << "  unknown name: " << unknown << std::endl;
     check(unknown.find("Fracture/Criterion: 'Griffith' is not a fracture "
-                       "criterion. Known criteria: Maximum principal stress, "
-                       "Mohr-Coulomb, Never fails.") != std::string::npos,
+                       "criterion. Known fracture criteria: Maximum principal "
+                       "stress, Mohr-Coulomb, Never fails.") !=
+            std::string::npos,
           "message for an unknown criterion");
     const std::string twice = message_of([]() {
       register_fracture_criterion("Mohr-Coulomb",
