@@ -246,6 +246,15 @@ def run_ndda(binary, scene_text, run_dir, timeout):
     with open(scene, "w") as stream:
         stream.write(scene_text)
         stream.write(f"subsection Output\n  set Directory = {out_dir}/\nend\n")
+        # The wall time of every step is not in the statistics by default
+        # (a statistics file without it can be pinned): ask for it.
+        stream.write(
+            "subsection Postprocess\n"
+            "  set List of postprocessors = displacement, velocity, stress, "
+            "block and material, crack faces, time step, energy, fracture, "
+            "contact, wall time\n"
+            "end\n"
+        )
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     try:

@@ -16,6 +16,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <ndda/base/utilities.h>
 #include <ndda/fracture/edge_stress.h>
 #include <ndda/mesh/state_transfer.h>
 #include <ndda/simulator.h>
@@ -56,35 +57,6 @@ namespace ndda
     private:
       std::streambuf *a, *b;
     };
-
-    std::string
-    to_string(const Point<2> &p)
-    {
-      std::ostringstream out;
-      out << "(" << p[0] << ", " << p[1] << ")";
-      return out.str();
-    }
-
-    double
-    distance_to_segment(const Point<2> &p, const geometry::Segment &s)
-    {
-      const Tensor<1, 2> ab = s.b - s.a;
-      const double t = std::clamp(((p - s.a) * ab) / ab.norm_square(), 0., 1.);
-      return p.distance(s.a + t * ab);
-    }
-
-    std::unique_ptr<FunctionParser<2>>
-    make_function(const std::string &expression,
-                  const unsigned int n_components,
-                  const bool         time_dependent)
-    {
-      auto function = std::make_unique<FunctionParser<2>>(n_components);
-      function->initialize(time_dependent ? "x,y,t" : "x,y",
-                           expression,
-                           {{"pi", numbers::PI}},
-                           time_dependent);
-      return function;
-    }
 
     /** cos and sin of a small angle, by series where that is exact. */
     std::pair<double, double>
@@ -314,49 +286,13 @@ namespace ndda
     for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
       cell_material[cell->active_cell_index()] = cell->material_id();
 
-    // Index caches for the loops of the time step: deal.II's iterators and
-    // get_dof_indices() cost more than the arithmetic of a P1 cell.
-    const unsigned int n_dofs_per_cell = fe->n_dofs_per_cell();
-    cell_dof_indices.resize(mesh.get_triangulation().n_active_cells() *
-                            n_dofs_per_cell);
-    local_component.resize(n_dofs_per_cell);
-    for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
-      local_component[i] = fe->system_to_component_index(i).first;
-    vertex_dofs.resize(mesh.get_triangulation().n_vertices());
-    dof_to_node.assign(dof_handler.n_dofs(), numbers::invalid_unsigned_int);
-    node_dofs.clear();
-    std::vector<types::global_dof_index> dofs(n_dofs_per_cell);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        std::copy(dofs.begin(),
-                  dofs.end(),
-                  cell_dof_indices.begin() +
-                    cell->active_cell_index() * n_dofs_per_cell);
-        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-          for (unsigned int c = 0; c < dim; ++c)
-            vertex_dofs[cell->vertex_index(v)][c] =
-              cell->vertex_dof_index(v, c);
-        for (unsigned int i = 0; i < n_dofs_per_cell; ++i)
-          {
-            const auto [component, base] = fe->system_to_component_index(i);
-            if (component == 0 &&
-                dof_to_node[dofs[i]] == numbers::invalid_unsigned_int)
-              {
-                const auto j = dofs[fe->component_to_system_index(1, base)];
-                dof_to_node[dofs[i]] = dof_to_node[j] = node_dofs.size();
-                node_dofs.push_back({{dofs[i], j}});
-              }
-          }
-      }
+    dof_map.reinit(dof_handler);
 
     const unsigned int n = dof_handler.n_dofs();
     displacement.reinit(n);
     kinematics.velocity.reinit(n);
     kinematics.inertia_force.reinit(n);
     internal_force.reinit(n);
-    for (unsigned int d = 0; d < dim; ++d)
-      gravity_load[d].reinit(n);
 
     if (element_matrices)
       element_cache.update(
@@ -374,209 +310,24 @@ namespace ndda
 
 
   template <int dim>
-  unsigned int
-  Simulator<dim>::find_vertex(const Point<dim>  &p,
-                              const std::string &entry) const
-  {
-    const auto  &vertices = mesh.get_block_mesh().vertices;
-    const auto   box      = mesh.bounding_box();
-    const double tolerance =
-      1e-8 * std::max(1., box.first.distance(box.second));
-    unsigned int best          = numbers::invalid_unsigned_int;
-    double       best_distance = tolerance;
-    for (unsigned int v = 0; v < vertices.size(); ++v)
-      if (vertices[v].distance(p) <= best_distance)
-        {
-          best          = v;
-          best_distance = vertices[v].distance(p);
-        }
-    if (best == numbers::invalid_unsigned_int)
-      {
-        // Outside, or inside but not a vertex (possible for imported meshes).
-        AssertThrow(mesh.locate(p).first != numbers::invalid_unsigned_int,
-                    ExcMessage(entry + ": the point " + to_string(p) +
-                               " lies outside every block. Move it into "
-                               "or onto a block."));
-        AssertThrow(false,
-                    ExcMessage(entry + ": the point " + to_string(p) +
-                               " is not a vertex of the mesh. With an "
-                               "imported mesh, give points that are mesh "
-                               "vertices."));
-      }
-    return best;
-  }
-
-
-
-  template <int dim>
   void
   Simulator<dim>::setup_constraints()
   {
-    // Which two dofs belong to the same node: per vertex dof of component 0
-    // the dof of component 1 at the same support point.
-    const auto                          &fe_ref = *fe;
-    std::vector<types::global_dof_index> partner(dof_handler.n_dofs());
-    std::vector<unsigned int>            component(dof_handler.n_dofs());
-    std::vector<types::global_dof_index> dofs(fe_ref.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          {
-            const auto [c, base] = fe_ref.system_to_component_index(i);
-            component[dofs[i]]   = c;
-            if (c == 0)
-              {
-                const unsigned int j =
-                  fe_ref.component_to_system_index(1, base);
-                partner[dofs[i]] = dofs[j];
-                partner[dofs[j]] = dofs[i];
-              }
-          }
-      }
-    std::vector<Point<dim>> support_points(dof_handler.n_dofs());
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+    const NodeLocator nodes(mesh, dof_handler, mapping);
     if (parameters.control.linear_solver == parameters::LinearSolver::cg_amg)
-      linear_solver->set_rigid_body_modes(support_points, component);
-
-    // Boundary nodes, for constraints on segments.
-    std::vector<bool> on_boundary(dof_handler.n_dofs(), false);
-    std::vector<types::global_dof_index> face_dofs(fe_ref.n_dofs_per_face());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      for (unsigned int f = 0; f < cell->n_faces(); ++f)
-        if (cell->at_boundary(f))
-          {
-            cell->face(f)->get_dof_indices(face_dofs);
-            for (const auto dof : face_dofs)
-              on_boundary[dof] = true;
-          }
-
-    const auto   box = mesh.bounding_box();
-    const double tolerance =
-      1e-8 * std::max(1., box.first.distance(box.second));
-
-    node_constraints.clear();
-    constraint_functions.clear();
-    std::vector<bool> constrained(dof_handler.n_dofs(), false);
-    for (const auto &bc : parameters.boundary_conditions.conditions)
-      {
-        const std::string where    = "Boundary conditions/" + bc.name;
-        unsigned int      function = numbers::invalid_unsigned_int;
-        if (bc.type != parameters::ConstraintType::fixed)
-          {
-            function = constraint_functions.size();
-            constraint_functions.push_back(
-              make_function(bc.value,
-                            bc.type == parameters::ConstraintType::roller ? 1 :
-                                                                            dim,
-                            true));
-          }
-        const double   angle = bc.roller_angle * numbers::PI / 180.;
-        Tensor<1, dim> normal;
-        normal[0] = -std::sin(angle);
-        normal[1] = std::cos(angle);
-
-        std::vector<types::global_dof_index> nodes;
-        for (const auto &p : bc.points)
-          {
-            const unsigned int vertex = find_vertex(p, where + "/Points");
-            const Point<dim>   x      = mesh.get_block_mesh().vertices[vertex];
-            for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-              if (component[i] == 0 &&
-                  support_points[i].distance(x) <= tolerance)
-                nodes.push_back(i);
-          }
-        for (const auto &segment : bc.segments)
-          {
-            const unsigned int before = nodes.size();
-            for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-              if (component[i] == 0 && on_boundary[i] &&
-                  distance_to_segment(support_points[i], segment) <= tolerance)
-                nodes.push_back(i);
-            AssertThrow(nodes.size() > before,
-                        ExcMessage(where +
-                                   "/Segments: no boundary vertex "
-                                   "lies on the segment " +
-                                   to_string(segment.a) + " - " +
-                                   to_string(segment.b) +
-                                   ". Give a segment along a block's "
-                                   "boundary."));
-          }
-        for (const auto i : nodes)
-          {
-            if (constrained[i])
-              continue; // The first condition listed for a node wins.
-            constrained[i] = constrained[partner[i]] = true;
-            NodeConstraint nc;
-            nc.dofs     = {{i, partner[i]}};
-            nc.position = support_points[i];
-            nc.type     = bc.type;
-            nc.normal   = normal;
-            nc.function = function;
-            nc.name     = bc.name;
-            node_constraints.push_back(nc);
-          }
-      }
-
-    constraints.clear();
-    if (parameters.control.constraint_method ==
-        parameters::ConstraintMethod::exact)
-      for (const auto &nc : node_constraints)
-        {
-          if (nc.type != parameters::ConstraintType::roller)
-            {
-              constraints.add_line(nc.dofs[0]);
-              constraints.add_line(nc.dofs[1]);
-            }
-          else
-            {
-              // n . u = d: solve for the component with the larger normal
-              // entry; the inhomogeneity is handled by the step's
-              // prescribed increment (see try_time_step()).
-              const unsigned int k =
-                std::abs(nc.normal[1]) >= std::abs(nc.normal[0]) ? 1 : 0;
-              constraints.add_line(nc.dofs[k]);
-              constraints.add_entry(nc.dofs[k],
-                                    nc.dofs[1 - k],
-                                    -nc.normal[1 - k] / nc.normal[k]);
-            }
-        }
-    constraints.close();
-
+      linear_solver->set_rigid_body_modes(nodes.support_points,
+                                          nodes.component);
+    boundary_constraints.setup(parameters.boundary_conditions,
+                               parameters.control.constraint_method,
+                               nodes);
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, true);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    boundary_constraints.affine_constraints(),
+                                    true);
     // Bolts couple two nodes that may lie in different blocks.
-    bolts.clear();
-    for (const auto &b : parameters.bolts.bolts)
-      {
-        const std::string where = "Bolts/" + b.name + "/End points";
-        Bolt              bolt;
-        const Point<dim>  ends[2] = {b.first, b.second};
-        for (unsigned int e = 0; e < 2; ++e)
-          {
-            const Point<dim> x =
-              mesh.get_block_mesh().vertices[find_vertex(ends[e], where)];
-            bool found = false;
-            for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-              if (component[i] == 0 &&
-                  support_points[i].distance(x) <= tolerance)
-                {
-                  bolt.dofs[2 * e]     = i;
-                  bolt.dofs[2 * e + 1] = partner[i];
-                  found                = true;
-                  break;
-                }
-            AssertThrow(found, ExcInternalError());
-          }
-        bolt.first      = b.first;
-        bolt.second     = b.second;
-        bolt.stiffness  = b.stiffness;
-        bolt.pretension = b.pretension;
-        for (const auto i : bolt.dofs)
-          for (const auto j : bolt.dofs)
-            dsp.add(i, j);
-        bolts.push_back(bolt);
-      }
+    bolts.setup(parameters.bolts, nodes);
+    bolts.add_couplings(dsp);
     if (parameters.contact.enabled)
       base_sparsity.copy_from(dsp);
     reinit_matrices(dsp);
@@ -589,7 +340,7 @@ namespace ndda
   void
   Simulator<dim>::reinit_matrices(DynamicSparsityPattern &dsp)
   {
-    constraints.condense(dsp);
+    boundary_constraints.affine_constraints().condense(dsp);
     sparsity_pattern.copy_from(dsp);
     stiffness_matrix.reinit(sparsity_pattern);
     mass_matrix.reinit(sparsity_pattern);
@@ -638,9 +389,9 @@ namespace ndda
 
     contact::DofAccess access;
     access.fe          = fe.get();
-    access.cell_dofs   = &cell_dof_indices;
-    access.component   = &local_component;
-    access.vertex_dofs = &vertex_dofs;
+    access.cell_dofs   = &dof_map.cell_dofs;
+    access.component   = &dof_map.local_component;
+    access.vertex_dofs = &dof_map.vertex_dofs;
 
     // Shi's detection distance: twice the largest displacement a step may
     // have, so every contact a step can close is a candidate of that step.
@@ -706,10 +457,10 @@ namespace ndda
       }
     const unsigned int n_cell_dofs = fe->n_dofs_per_cell();
     for (const auto &[vertex, cell] : merged)
-      for (const auto i : vertex_dofs[vertex])
+      for (const auto i : dof_map.vertex_dofs[vertex])
         for (unsigned int k = 0; k < n_cell_dofs; ++k)
           {
-            const auto j = cell_dof_indices[cell * n_cell_dofs + k];
+            const auto j = dof_map.cell_dofs[cell * n_cell_dofs + k];
             dsp.add(i, j);
             dsp.add(j, i);
           }
@@ -721,125 +472,14 @@ namespace ndda
 
 
   template <int dim>
-  typename Simulator<dim>::PointEvaluator
-  Simulator<dim>::make_point_evaluator(const Point<dim>  &p,
-                                       const std::string &entry) const
-  {
-    // deal.II 9.4's find_active_cell_around_point() can return a cell of
-    // another block on meshes of disconnected blocks; locate by
-    // barycentric coordinates instead.
-    const auto [cell_index, unit_point] = mesh.locate(p);
-    AssertThrow(cell_index != numbers::invalid_unsigned_int,
-                ExcMessage(entry + ": the point " + to_string(p) +
-                           " lies outside every block. Move it into or onto "
-                           "a block."));
-    PointEvaluator evaluator;
-    evaluator.cell = cell_index;
-    evaluator.dofs.assign(cell_dof_indices.begin() +
-                            cell_index * fe->n_dofs_per_cell(),
-                          cell_dof_indices.begin() +
-                            (cell_index + 1) * fe->n_dofs_per_cell());
-    for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
-      {
-        evaluator.shape_values.push_back(fe->shape_value(i, unit_point));
-        evaluator.component.push_back(fe->system_to_component_index(i).first);
-      }
-    return evaluator;
-  }
-
-
-
-  template <int dim>
   void
   Simulator<dim>::setup_loads()
   {
-    gravity = make_function(parameters.loads.gravity, dim, true);
-    point_load_functions.clear();
-    point_load_points.clear();
-    for (const auto &load : parameters.loads.point_loads)
-      {
-        point_load_functions.push_back(make_function(load.force, dim, true));
-        point_load_points.push_back(
-          make_point_evaluator(load.point, "Loads/" + load.name + "/Point"));
-      }
-
-    line_load_functions.clear();
-    loaded_faces.clear();
-    const auto   box = mesh.bounding_box();
-    const double tolerance =
-      1e-8 * std::max(1., box.first.distance(box.second));
-    for (unsigned int l = 0; l < parameters.loads.line_loads.size(); ++l)
-      {
-        const auto &load = parameters.loads.line_loads[l];
-        line_load_functions.push_back(
-          make_function(load.value, load.is_pressure ? 1 : dim, true));
-        unsigned int n_faces = 0;
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (unsigned int f = 0; f < cell->n_faces(); ++f)
-            if (cell->at_boundary(f) &&
-                distance_to_segment(cell->face(f)->vertex(0), load.segment) <=
-                  tolerance &&
-                distance_to_segment(cell->face(f)->vertex(1), load.segment) <=
-                  tolerance)
-              {
-                LoadedFace face;
-                face.line_load = l;
-                face.cell      = cell->active_cell_index();
-                face.face      = f;
-                loaded_faces.push_back(face);
-                ++n_faces;
-              }
-        AssertThrow(n_faces > 0,
-                    ExcMessage("Loads/" + load.name +
-                               "/Segment: no boundary edge lies on the "
-                               "segment " +
-                               to_string(load.segment.a) + " - " +
-                               to_string(load.segment.b) +
-                               ". Give a segment along a block's boundary."));
-      }
-    update_loaded_faces();
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::update_loaded_faces()
-  {
-    // Quadrature data of the loaded faces on the current geometry.
-    FEFaceValues<dim> fe_face_values(mapping,
-                                     *fe,
-                                     *face_quadrature,
-                                     update_values | update_JxW_values |
-                                       update_normal_vectors |
-                                       update_quadrature_points);
-    std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      cells.push_back(cell);
-    for (auto &face : loaded_faces)
-      {
-        const auto &cell = cells[face.cell];
-        fe_face_values.reinit(cell, face.face);
-        face.dofs.resize(fe->n_dofs_per_cell());
-        cell->get_dof_indices(face.dofs);
-        face.component.clear();
-        face.weighted_shape.clear();
-        face.points.clear();
-        face.normals.clear();
-        for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
-          face.component.push_back(fe->system_to_component_index(i).first);
-        for (unsigned int q = 0; q < face_quadrature->size(); ++q)
-          {
-            std::vector<double> w(fe->n_dofs_per_cell());
-            for (unsigned int i = 0; i < w.size(); ++i)
-              w[i] =
-                fe_face_values.shape_value_component(i, q, face.component[i]) *
-                fe_face_values.JxW(q) * parameters.materials.thickness;
-            face.weighted_shape.push_back(w);
-            face.points.push_back(fe_face_values.quadrature_point(q));
-            face.normals.push_back(fe_face_values.normal_vector(q));
-          }
-      }
+    loads.setup(parameters.loads, mesh, dof_handler, dof_map);
+    loads.update_faces(dof_handler,
+                       mapping,
+                       *face_quadrature,
+                       parameters.materials.thickness);
   }
 
 
@@ -851,21 +491,8 @@ namespace ndda
     measure_points.clear();
     for (const auto &p : parameters.output.measure_points)
       measure_points.push_back(
-        make_point_evaluator(p, "Output/Measure points"));
+        make_point_evaluator(mesh, *fe, dof_map, p, "Output/Measure points"));
     measure_histories.assign(measure_points.size(), {});
-  }
-
-
-
-  template <int dim>
-  std::pair<std::array<Point<dim>, 2>, Tensor<1, dim>>
-  Simulator<dim>::bolt_geometry(const Bolt &bolt) const
-  {
-    std::array<Point<dim>, 2> x = {{bolt.first, bolt.second}};
-    for (unsigned int e = 0; e < 2; ++e)
-      for (unsigned int d = 0; d < dim; ++d)
-        x[e][d] += displacement[bolt.dofs[dim * e + d]];
-    return {x, (x[0] - x[1]) / x[0].distance(x[1])};
   }
 
 
@@ -880,11 +507,11 @@ namespace ndda
     has_damping                                 = false;
     const unsigned int                   n_dofs = fe->n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n_dofs);
-    for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
+    for (unsigned int c = 0; c < dof_map.cell_dofs.size() / n_dofs; ++c)
       {
         const auto &data = element_cache[c];
-        std::copy(&cell_dof_indices[c * n_dofs],
-                  &cell_dof_indices[c * n_dofs] + n_dofs,
+        std::copy(&dof_map.cell_dofs[c * n_dofs],
+                  &dof_map.cell_dofs[c * n_dofs] + n_dofs,
                   dofs.begin());
         stiffness_matrix.add(dofs, data.stiffness);
         mass_matrix.add(dofs, data.mass);
@@ -900,20 +527,7 @@ namespace ndda
           }
       }
 
-    // Bolts, thesis 3.6: k_b L L^T with L the unit vector between the
-    // anchors on the current geometry.
-    for (const auto &bolt : bolts)
-      {
-        const Tensor<1, dim> l = bolt_geometry(bolt).second;
-        for (unsigned int a = 0; a < 2; ++a)
-          for (unsigned int b = 0; b < 2; ++b)
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                stiffness_matrix.add(bolt.dofs[2 * a + i],
-                                     bolt.dofs[2 * b + j],
-                                     (a == b ? 1. : -1.) * bolt.stiffness *
-                                       l[i] * l[j]);
-      }
+    bolts.add_stiffness(displacement, stiffness_matrix);
     matrices_changed = true;
   }
 
@@ -940,10 +554,10 @@ namespace ndda
     for (const auto &C : element_cache.get_elasticity())
       compliance.push_back(invert(C));
     double energy = 0;
-    for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
+    for (unsigned int c = 0; c < dof_map.cell_dofs.size() / n_dofs; ++c)
       {
         const auto        &data     = element_cache[c];
-        const auto        *dofs     = &cell_dof_indices[c * n_dofs];
+        const auto        *dofs     = &dof_map.cell_dofs[c * n_dofs];
         const unsigned int material = cell_material[c];
         for (unsigned int q = 0; q < n_q; ++q)
           {
@@ -962,15 +576,7 @@ namespace ndda
       }
     stored_strain_energy = energy - initial_strain_energy;
     // Bolts pull their anchors towards each other with their spring force.
-    for (const auto &bolt : bolts)
-      {
-        const Tensor<1, dim> l = bolt_geometry(bolt).second;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            internal_force[bolt.dofs[d]] += bolt.axial_force * l[d];
-            internal_force[bolt.dofs[dim + d]] -= bolt.axial_force * l[d];
-          }
-      }
+    bolts.add_internal_force(displacement, internal_force);
   }
 
 
@@ -981,58 +587,9 @@ namespace ndda
                                           Vector<double> &force) const
   {
     force.reinit(dof_handler.n_dofs());
-    // Gravity, thesis 3.5.3 with consistent loads: f = M g.
-    const Point<dim> origin;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        gravity->set_time(t);
-        const double g = gravity->value(origin, d);
-        if (g != 0.)
-          force.add(g, gravity_load[d]);
-      }
-    // Point loads, thesis 3.5.1: f = N^T p at the material point.
-    for (unsigned int l = 0; l < point_load_points.size(); ++l)
-      {
-        const auto &evaluator = point_load_points[l];
-        point_load_functions[l]->set_time(t);
-        const auto &p = parameters.loads.point_loads[l].point;
-        for (unsigned int i = 0; i < evaluator.dofs.size(); ++i)
-          force[evaluator.dofs[i]] +=
-            evaluator.shape_values[i] *
-            point_load_functions[l]->value(p, evaluator.component[i]);
-      }
-    // Line loads, thesis 3.5.2, integrated with the element's own shape
-    // functions on the face.
-    for (const auto &face : loaded_faces)
-      {
-        auto &function = *line_load_functions[face.line_load];
-        function.set_time(t);
-        const bool pressure =
-          parameters.loads.line_loads[face.line_load].is_pressure;
-        for (unsigned int q = 0; q < face.points.size(); ++q)
-          {
-            Tensor<1, dim> traction;
-            if (pressure)
-              traction = -function.value(face.points[q], 0) * face.normals[q];
-            else
-              for (unsigned int d = 0; d < dim; ++d)
-                traction[d] = function.value(face.points[q], d);
-            for (unsigned int i = 0; i < face.dofs.size(); ++i)
-              force[face.dofs[i]] +=
-                face.weighted_shape[q][i] * traction[face.component[i]];
-          }
-      }
+    loads.add(t, force);
     // Bolt pretension pulls the anchors together.
-    for (const auto &bolt : bolts)
-      if (bolt.pretension != 0.)
-        {
-          const Tensor<1, dim> l = bolt_geometry(bolt).second;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              force[bolt.dofs[d]] -= bolt.pretension * l[d];
-              force[bolt.dofs[dim + d]] += bolt.pretension * l[d];
-            }
-        }
+    bolts.add_pretension(displacement, force);
   }
 
 
@@ -1059,17 +616,13 @@ namespace ndda
       }
     ++n_matrix_rebuilds;
     assemble_global_matrices();
-    // Gravity load vectors: M times a unit acceleration.
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        Vector<double> unit(dof_handler.n_dofs());
-        for (const auto &dofs : node_dofs)
-          unit[dofs[d]] = 1.;
-        mass_matrix.vmult(gravity_load[d], unit);
-      }
+    loads.update_gravity(mass_matrix, dof_map);
     compute_internal_force();
     if (only_moved_cells)
-      update_loaded_faces();
+      loads.update_faces(dof_handler,
+                         mapping,
+                         *face_quadrature,
+                         parameters.materials.thickness);
   }
 
 
@@ -1087,18 +640,9 @@ namespace ndda
       system_matrix.add(c_mass, mass_matrix);
     if (has_damping)
       system_matrix.add(integrator.damping_coefficient(dt), damping_matrix);
-    if (control.constraint_method == parameters::ConstraintMethod::penalty)
-      for (const auto &nc : node_constraints)
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            {
-              const double k =
-                nc.type == parameters::ConstraintType::roller ?
-                  penalty_stiffness * nc.normal[i] * nc.normal[j] :
-                  (i == j ? penalty_stiffness : 0.);
-              if (k != 0.)
-                system_matrix.add(nc.dofs[i], nc.dofs[j], k);
-            }
+    if (!boundary_constraints.exact())
+      boundary_constraints.add_penalty_springs(penalty_stiffness,
+                                               system_matrix);
     assembled_dt     = dt;
     matrices_changed = false;
     base_factorized  = false;
@@ -1130,9 +674,9 @@ namespace ndda
     rhs -= internal_force;
     SparseMatrix<double> m(sparsity_pattern);
     m.copy_from(mass_matrix);
-    if (parameters.control.constraint_method ==
-        parameters::ConstraintMethod::penalty)
-      for (const auto &nc : node_constraints)
+    const auto &constraints = boundary_constraints.affine_constraints();
+    if (!boundary_constraints.exact())
+      for (const auto &nc : boundary_constraints.constrained_nodes())
         for (const auto dof : nc.dofs)
           {
             rhs[dof] = 0;
@@ -1155,73 +699,6 @@ namespace ndda
       }
     constraints.distribute(acceleration);
     mass_matrix.vmult(kinematics.inertia_force, acceleration);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::prescribed_increment(const double    t0,
-                                       const double    dt,
-                                       Vector<double> &increment) const
-  {
-    // The increment that brings every constrained node to its prescribed
-    // value at t0 + dt, measured from where it is now (so that no error
-    // accumulates).
-    increment = 0;
-    for (const auto &nc : node_constraints)
-      {
-        Tensor<1, dim> current;
-        for (unsigned int d = 0; d < dim; ++d)
-          current[d] = displacement[nc.dofs[d]];
-        const Point<dim> x0 = nc.position - current;
-        Tensor<1, dim>   target_increment;
-        switch (nc.type)
-          {
-            case parameters::ConstraintType::fixed:
-              target_increment = -current;
-              break;
-            case parameters::ConstraintType::displacement:
-              {
-                auto &f = *constraint_functions[nc.function];
-                f.set_time(t0 + dt);
-                for (unsigned int d = 0; d < dim; ++d)
-                  target_increment[d] = f.value(x0, d) - current[d];
-                break;
-              }
-            case parameters::ConstraintType::velocity:
-              {
-                auto &f = *constraint_functions[nc.function];
-                f.set_time(t0 + 0.5 * dt);
-                for (unsigned int d = 0; d < dim; ++d)
-                  target_increment[d] = f.value(x0, d) * dt;
-                break;
-              }
-            case parameters::ConstraintType::roller:
-              {
-                auto &f = *constraint_functions[nc.function];
-                f.set_time(t0 + dt);
-                // Only the normal part is prescribed.
-                target_increment =
-                  (f.value(x0, 0) - nc.normal * current) * nc.normal;
-                break;
-              }
-          }
-        if (parameters.control.constraint_method ==
-              parameters::ConstraintMethod::exact &&
-            nc.type == parameters::ConstraintType::roller)
-          {
-            // Put the whole normal increment on the dependent component,
-            // see setup_constraints().
-            const unsigned int k =
-              std::abs(nc.normal[1]) >= std::abs(nc.normal[0]) ? 1 : 0;
-            increment[nc.dofs[k]] =
-              (target_increment * nc.normal) / nc.normal[k];
-          }
-        else
-          for (unsigned int d = 0; d < dim; ++d)
-            increment[nc.dofs[d]] = target_increment[d];
-      }
   }
 
 
@@ -1251,15 +728,15 @@ namespace ndda
     }
 
     Vector<double> prescribed(dof_handler.n_dofs());
-    prescribed_increment(time, dt, prescribed);
+    boundary_constraints.prescribed_increment(time,
+                                              dt,
+                                              displacement,
+                                              prescribed);
     if (!exact)
-      for (const auto &nc : node_constraints)
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            rhs[nc.dofs[i]] += (nc.type == parameters::ConstraintType::roller ?
-                                  nc.normal[i] * nc.normal[j] :
-                                  (i == j ? 1. : 0.)) *
-                               penalty_stiffness * prescribed[nc.dofs[j]];
+      boundary_constraints.add_penalty_forces(penalty_stiffness,
+                                              prescribed,
+                                              rhs);
+    const auto &constraints = boundary_constraints.affine_constraints();
     d.reinit(dof_handler.n_dofs());
 
     // The open-close iteration (thesis 2.3.13; DESIGN decision 5): solve
@@ -1299,7 +776,7 @@ namespace ndda
           {
             // d = d_h + d_g: d_g carries the prescribed values, d_h
             // satisfies the homogeneous constraints.
-            if (!node_constraints.empty())
+            if (!boundary_constraints.constrained_nodes().empty())
               {
                 Vector<double> tmp(dof_handler.n_dofs());
                 if (springs || !base_factorized)
@@ -1357,7 +834,7 @@ namespace ndda
     // DDA step control: the largest nodal displacement must stay below the
     // allowed fraction of half the scene height.
     max_increment = 0;
-    for (const auto &dofs : vertex_dofs)
+    for (const auto &dofs : dof_map.vertex_dofs)
       max_increment =
         std::max(max_increment,
                  d[dofs[0]] * d[dofs[0]] + d[dofs[1]] * d[dofs[1]]);
@@ -1377,7 +854,7 @@ namespace ndda
             {
               now[k] = next[k] = block_mesh.vertices[t[k]];
               for (unsigned int c = 0; c < dim; ++c)
-                next[k][c] += d[vertex_dofs[t[k]][c]];
+                next[k][c] += d[dof_map.vertex_dofs[t[k]][c]];
             }
           const auto twice_area = [](const std::array<Point<dim>, 3> &p) {
             return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
@@ -1421,14 +898,7 @@ namespace ndda
     for (unsigned int c = 0; c < stress.size(); ++c)
       advance_cell_stress(c, d, stress[c]);
 
-    for (auto &bolt : bolts)
-      {
-        const Tensor<1, dim> l          = bolt_geometry(bolt).second;
-        double               elongation = 0;
-        for (unsigned int c = 0; c < dim; ++c)
-          elongation += l[c] * (d[bolt.dofs[c]] - d[bolt.dofs[dim + c]]);
-        bolt.axial_force += bolt.stiffness * elongation;
-      }
+    bolts.update(displacement, d);
 
     // Work of the loads over the step, by the trapezoidal rule.
     load_work += 0.5 * (external_force * d + step_external_force * d);
@@ -1453,7 +923,7 @@ namespace ndda
     const unsigned int n_dofs = fe->n_dofs_per_cell();
     const unsigned int n_q    = element_cache.n_quadrature_points();
     const auto        &data   = element_cache[c];
-    const auto        *dofs   = &cell_dof_indices[c * n_dofs];
+    const auto        *dofs   = &dof_map.cell_dofs[c * n_dofs];
     double             omega = 0, area = 0;
     for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -1495,7 +965,7 @@ namespace ndda
       }
     const unsigned int n_dofs = fe->n_dofs_per_cell();
     const auto        &data   = element_cache[c];
-    const auto        *dofs   = &cell_dof_indices[c * n_dofs];
+    const auto        *dofs   = &dof_map.cell_dofs[c * n_dofs];
     const auto        &C = element_cache.get_elasticity()[cell_material[c]];
     for (unsigned int q = 0; q < sigma.size(); ++q)
       {
@@ -1524,17 +994,17 @@ namespace ndda
     const unsigned int        n_dofs   = fe->n_dofs_per_cell();
     const unsigned int        n_blocks = mesh.n_blocks();
     std::vector<double>       block_spin(n_blocks), block_area(n_blocks);
-    std::vector<unsigned int> node_block(node_dofs.size(),
+    std::vector<unsigned int> node_block(dof_map.node_dofs.size(),
                                          numbers::invalid_unsigned_int);
-    for (unsigned int c = 0; c < cell_dof_indices.size() / n_dofs; ++c)
+    for (unsigned int c = 0; c < dof_map.cell_dofs.size() / n_dofs; ++c)
       {
         const auto [omega, area] = cell_rotation(c, d);
         const unsigned int b     = mesh.block_of_cell(c);
         block_spin[b] += omega;
         block_area[b] += area;
-        const auto *dofs = &cell_dof_indices[c * n_dofs];
+        const auto *dofs = &dof_map.cell_dofs[c * n_dofs];
         for (unsigned int i = 0; i < n_dofs; ++i)
-          node_block[dof_to_node[dofs[i]]] = b;
+          node_block[dof_map.dof_to_node[dofs[i]]] = b;
       }
 
     // Centre-of-mass velocity and acceleration of each block, with the
@@ -1542,23 +1012,23 @@ namespace ndda
     // for the consistent mass too).
     std::vector<double>         block_mass(n_blocks);
     std::vector<Tensor<1, dim>> block_velocity(n_blocks), block_force(n_blocks);
-    std::vector<double>         node_mass(node_dofs.size());
-    for (unsigned int n = 0; n < node_dofs.size(); ++n)
+    std::vector<double>         node_mass(dof_map.node_dofs.size());
+    for (unsigned int n = 0; n < dof_map.node_dofs.size(); ++n)
       {
         const unsigned int b = node_block[n];
         if (b == numbers::invalid_unsigned_int)
           continue;
         double m = 0;
-        for (auto entry = mass_matrix.begin(node_dofs[n][0]);
-             entry != mass_matrix.end(node_dofs[n][0]);
+        for (auto entry = mass_matrix.begin(dof_map.node_dofs[n][0]);
+             entry != mass_matrix.end(dof_map.node_dofs[n][0]);
              ++entry)
           m += entry->value();
         node_mass[n] = m;
         block_mass[b] += m;
         for (unsigned int k = 0; k < dim; ++k)
           {
-            block_velocity[b][k] += m * kinematics.velocity[node_dofs[n][k]];
-            block_force[b][k] += kinematics.inertia_force[node_dofs[n][k]];
+            block_velocity[b][k] += m * kinematics.velocity[dof_map.node_dofs[n][k]];
+            block_force[b][k] += kinematics.inertia_force[dof_map.node_dofs[n][k]];
           }
       }
     for (unsigned int b = 0; b < n_blocks; ++b)
@@ -1569,25 +1039,25 @@ namespace ndda
           block_spin[b] /= block_area[b];
         }
 
-    for (unsigned int n = 0; n < node_dofs.size(); ++n)
+    for (unsigned int n = 0; n < dof_map.node_dofs.size(); ++n)
       {
         const unsigned int b = node_block[n];
         if (b == numbers::invalid_unsigned_int || block_spin[b] == 0. ||
             block_mass[b] <= 0.)
           continue;
         const auto [cs, sn] = cos_sin(block_spin[b]);
-        const auto [i, j]   = node_dofs[n];
+        const auto [i, j]   = dof_map.node_dofs[n];
         for (unsigned int k = 0; k < dim; ++k)
           {
-            kinematics.velocity[node_dofs[n][k]] -= block_velocity[b][k];
-            kinematics.inertia_force[node_dofs[n][k]] -= node_mass[n] * block_force[b][k];
+            kinematics.velocity[dof_map.node_dofs[n][k]] -= block_velocity[b][k];
+            kinematics.inertia_force[dof_map.node_dofs[n][k]] -= node_mass[n] * block_force[b][k];
           }
         rotate_pair(kinematics.velocity, i, j, cs, sn);
         rotate_pair(kinematics.inertia_force, i, j, cs, sn);
         for (unsigned int k = 0; k < dim; ++k)
           {
-            kinematics.velocity[node_dofs[n][k]] += block_velocity[b][k];
-            kinematics.inertia_force[node_dofs[n][k]] += node_mass[n] * block_force[b][k];
+            kinematics.velocity[dof_map.node_dofs[n][k]] += block_velocity[b][k];
+            kinematics.inertia_force[dof_map.node_dofs[n][k]] += node_mass[n] * block_force[b][k];
           }
       }
   }
@@ -1598,10 +1068,10 @@ namespace ndda
   void
   Simulator<dim>::move_mesh(const Vector<double> &d)
   {
-    std::vector<Tensor<1, dim>> vertex_increment(vertex_dofs.size());
-    for (unsigned int v = 0; v < vertex_dofs.size(); ++v)
+    std::vector<Tensor<1, dim>> vertex_increment(dof_map.vertex_dofs.size());
+    for (unsigned int v = 0; v < dof_map.vertex_dofs.size(); ++v)
       for (unsigned int c = 0; c < dim; ++c)
-        vertex_increment[v][c] = d[vertex_dofs[v][c]];
+        vertex_increment[v][c] = d[dof_map.vertex_dofs[v][c]];
     mesh.move_vertices(vertex_increment);
   }
 
@@ -1672,7 +1142,7 @@ namespace ndda
     std::vector<Point<dim>> end_vertices = block_mesh.vertices;
     for (unsigned int v = 0; v < end_vertices.size(); ++v)
       for (unsigned int c = 0; c < dim; ++c)
-        end_vertices[v][c] += d[vertex_dofs[v][c]];
+        end_vertices[v][c] += d[dof_map.vertex_dofs[v][c]];
     std::vector<SymmetricTensor<2, dim>> end_stresses(stress.size());
     std::vector<SymmetricTensor<2, dim>> sigma;
     for (unsigned int c = 0; c < stress.size(); ++c)
@@ -1749,7 +1219,7 @@ namespace ndda
     // DoFHandler: dof vectors by cell, the acceleration as M a over the
     // lumped mass (a force vector must not be copied to both sides of a
     // split node).
-    const std::vector<types::global_dof_index> old_cell_dofs = cell_dof_indices;
+    const std::vector<types::global_dof_index> old_cell_dofs = dof_map.cell_dofs;
     const auto                                 lumped_mass   = [this]() {
       Vector<double> m(mass_matrix.m());
       for (unsigned int i = 0; i < m.size(); ++i)
@@ -1765,9 +1235,7 @@ namespace ndda
         acceleration[i] /= old_mass[i];
     const Vector<double> old_displacement(displacement);
     const Vector<double> old_velocity(kinematics.velocity);
-    std::vector<double>  bolt_forces;
-    for (const auto &bolt : bolts)
-      bolt_forces.push_back(bolt.axial_force);
+    const std::vector<double> bolt_forces = bolts.axial_forces();
     const contact::ContactHandler old_contacts(contacts);
 
     mesh.crack(edges);
@@ -1778,7 +1246,7 @@ namespace ndda
       now.reinit(dof_handler.n_dofs());
       state_transfer::transfer_dof_values(old_cell_dofs,
                                           old,
-                                          cell_dof_indices,
+                                          dof_map.cell_dofs,
                                           now);
     };
     transfer(old_displacement, displacement);
@@ -1788,19 +1256,18 @@ namespace ndda
     // Constraints, loads and measure points are found by position on the
     // scene's initial geometry: set them up with the mesh moved back
     // there, then move it forward again.
-    std::vector<Tensor<1, dim>> u(vertex_dofs.size());
-    for (unsigned int v = 0; v < vertex_dofs.size(); ++v)
+    std::vector<Tensor<1, dim>> u(dof_map.vertex_dofs.size());
+    for (unsigned int v = 0; v < dof_map.vertex_dofs.size(); ++v)
       for (unsigned int c = 0; c < dim; ++c)
-        u[v][c] = -displacement[vertex_dofs[v][c]];
+        u[v][c] = -displacement[dof_map.vertex_dofs[v][c]];
     mesh.move_vertices(u);
     setup_constraints();
-    for (unsigned int b = 0; b < bolts.size(); ++b)
-      bolts[b].axial_force = bolt_forces[b];
+    bolts.set_axial_forces(bolt_forces);
     setup_loads();
     measure_points.clear(); // their histories stay
     for (const auto &p : parameters.output.measure_points)
       measure_points.push_back(
-        make_point_evaluator(p, "Output/Measure points"));
+        make_point_evaluator(mesh, *fe, dof_map, p, "Output/Measure points"));
     for (auto &x : u)
       x *= -1.;
     mesh.move_vertices(u);
@@ -1819,7 +1286,10 @@ namespace ndda
     element_cache.update(
       dof_handler, mapping, parameters.materials, tolerance > 0., tolerance);
     build_element_matrices(false);
-    update_loaded_faces();
+    loads.update_faces(dof_handler,
+                       mapping,
+                       *face_quadrature,
+                       parameters.materials.thickness);
     kinematics.inertia_force = lumped_mass();
     kinematics.inertia_force.scale(new_acceleration);
     external_force.reinit(dof_handler.n_dofs());
@@ -1987,7 +1457,7 @@ namespace ndda
     ++step_number;
     record_measure_points();
     last_step_time = wall.wall_time();
-    record_statistics();
+    record_statistics(dt);
     // The statistics of this step are recorded before a crawling run is
     // stopped.
     step_controller.check_progress(time);
@@ -1997,67 +1467,20 @@ namespace ndda
 
   template <int dim>
   void
-  Simulator<dim>::record_statistics()
+  Simulator<dim>::record_statistics(const double dt)
   {
-    statistics.add_value("Time step number", step_number);
-    statistics.add_value("Time (s)", time);
-    statistics.add_value("Time step size (s)", step_controller.last_step_size());
-    statistics.add_value("Step cuts", step_controller.n_cuts());
-    statistics.add_value("Solver iterations", last_solver_iterations);
-    statistics.add_value("Matrix builds", n_matrix_rebuilds);
-    statistics.add_value("Kinetic energy (J)", kinetic_energy());
-    statistics.add_value("Strain energy (J)", strain_energy());
-    statistics.add_value("Max increment (m)", max_increment);
-    if (fracture_enabled && parameters.fracture.split_edges)
-      {
-        statistics.add_value("Crack events", n_crack_events);
-        statistics.add_value("Cracked edges", n_cracked_edges);
-        statistics.add_value("Crack limit hit", crack_limit_hit ? 1 : 0);
-      }
-    if (fracture_enabled)
-      statistics.add_value("Failing edges", n_failing_edges);
-    if (parameters.contact.enabled)
-      {
-        const auto &c = contacts.get_statistics();
-        statistics.add_value("Open-close iterations", c.n_iterations);
-        statistics.add_value("Open-close cuts",
-                             step_controller.n_open_close_cuts());
-        statistics.add_value("Contact candidates", c.n_contacts);
-        statistics.add_value("Closed contacts", c.n_closed);
-        statistics.add_value("Sliding contacts", c.n_sliding);
-        statistics.add_value("Vertex springs", c.n_vertex_springs);
-        statistics.add_value("Bonded contacts", c.n_bonded);
-        statistics.add_value("Max penetration (m)", c.max_penetration);
-        statistics.add_value("Contact energy (J)", c.spring_energy);
-        statistics.add_value("Contact dissipation (J)", c.dissipation);
-        statistics.add_value("Normal stiffness (N/m)",
-                             contacts.get_settings().normal_stiffness);
-      }
-    statistics.add_value("Work of loads (J)", load_work);
-    statistics.add_value("Energy gain (J)", energy_error());
-    statistics.add_value("Wall time per step (s)", last_step_time);
-    if (step_number == 1)
-      {
-        std::vector<std::string> columns = {"Time (s)",
-                                            "Time step size (s)",
-                                            "Max increment (m)",
-                                            "Kinetic energy (J)",
-                                            "Strain energy (J)",
-                                            "Work of loads (J)",
-                                            "Energy gain (J)"};
-        if (parameters.contact.enabled)
-          for (const auto *c : {"Max penetration (m)",
-                                "Contact energy (J)",
-                                "Contact dissipation (J)",
-                                "Normal stiffness (N/m)"})
-            columns.push_back(c);
-        for (const auto &c : columns)
-          {
-            statistics.set_scientific(c, true);
-            statistics.set_precision(c, 6);
-          }
-      }
-
+    step_report.dt                = dt;
+    step_report.cuts              = step_controller.n_cuts();
+    step_report.open_close_cuts   = step_controller.n_open_close_cuts();
+    step_report.solver_iterations = last_solver_iterations;
+    step_report.matrix_builds     = n_matrix_rebuilds;
+    step_report.max_increment     = max_increment;
+    step_report.fracture          = fracture_enabled;
+    step_report.crack_events      = n_crack_events;
+    step_report.crack_limit_hit   = crack_limit_hit;
+    step_report.failing_edges     = n_failing_edges;
+    for (const auto &postprocessor : parameters.postprocess.postprocessors)
+      postprocessor->add_statistics(*this, statistics);
   }
 
 
@@ -2079,120 +1502,7 @@ namespace ndda
   Simulator<dim>::output_results()
   {
     TimerOutput::Scope scope(timer, "output");
-    const auto        &out_parameters = parameters.output;
-    const unsigned int n_cells = mesh.get_triangulation().n_active_cells();
-    Vector<double>     sxx(n_cells), syy(n_cells), sxy(n_cells), s1(n_cells),
-      s2(n_cells), block(n_cells), material(n_cells);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        const unsigned int c = cell->active_cell_index();
-        const auto         s = mean_cell_stress(c);
-        sxx[c]               = s[0][0];
-        syy[c]               = s[1][1];
-        sxy[c]               = s[0][1];
-        const double mean    = 0.5 * (s[0][0] + s[1][1]);
-        const double r       = std::sqrt(
-          0.25 * (s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) + s[0][1] * s[0][1]);
-        s1[c]       = mean + r;
-        s2[c]       = mean - r;
-        block[c]    = mesh.block_of_cell(c);
-        material[c] = cell->material_id();
-      }
-    // The number of each cell's sides that are crack faces (pre-existing
-    // or new): the faces of a fresh crack touch, so without this field a
-    // picture cannot tell them from an unbroken edge. A crack face is a
-    // side of its cell with the same vertex order.
-    Vector<double> crack_faces(n_cells);
-    if (!mesh.get_block_mesh().crack_edges.empty())
-      {
-        const auto &block_mesh = mesh.get_block_mesh();
-        std::map<std::pair<unsigned int, unsigned int>, unsigned int> side_of;
-        for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
-          for (unsigned int j = 0; j < 3; ++j)
-            side_of[{block_mesh.triangles[c][j],
-                     block_mesh.triangles[c][(j + 1) % 3]}] = c;
-        for (const auto &e : block_mesh.crack_edges)
-          {
-            const auto side = side_of.find({e[0], e[1]});
-            if (side != side_of.end() && side->second < n_cells)
-              crack_faces[side->second] += 1.;
-          }
-      }
-    DataOut<dim> data_out;
-    data_out.attach_dof_handler(dof_handler);
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_kind(dim,
-                  DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(displacement,
-                             std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data,
-                             vector_kind);
-    data_out.add_data_vector(kinematics.velocity,
-                             std::vector<std::string>(dim, "velocity"),
-                             DataOut<dim>::type_dof_data,
-                             vector_kind);
-    data_out.add_data_vector(sxx, "stress_xx", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(syy, "stress_yy", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(sxy, "stress_xy", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(s1,
-                             "principal_stress_1",
-                             DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(s2,
-                             "principal_stress_2",
-                             DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(block, "block_id", DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(material,
-                             "material_id",
-                             DataOut<dim>::type_cell_data);
-    data_out.add_data_vector(crack_faces,
-                             "crack_faces",
-                             DataOut<dim>::type_cell_data);
-    data_out.build_patches(mapping, parameters.control.element_degree);
-    DataOutBase::VtkFlags flags;
-    flags.compression_level = DataOutBase::VtkFlags::best_speed;
-    data_out.set_flags(flags);
-
-    const std::string number = Utilities::int_to_string(output_number, 5);
-    if (out_parameters.write_vtu)
-      {
-        const std::string name = "solution-" + number + ".vtu";
-        std::ofstream     vtu(out_parameters.directory + name);
-        data_out.write_vtu(vtu);
-        pvd_records.emplace_back(time, name);
-        std::ofstream pvd(out_parameters.directory + "solution.pvd");
-        DataOutBase::write_pvd_record(pvd, pvd_records);
-        // The crack faces as segments on the present geometry, for
-        // pictures: the faces of a fresh crack touch, and a VTU file
-        // cannot tell them from an unbroken edge.
-        const auto &block_mesh = mesh.get_block_mesh();
-        if (!block_mesh.crack_edges.empty())
-          {
-            std::ofstream cracks(out_parameters.directory + "cracks-" + number +
-                                 ".txt");
-            cracks << "# crack faces at t = " << time
-                   << " s: x1 y1 x2 y2 (m), one face per line\n"
-                   << std::setprecision(10);
-            for (const auto &e : block_mesh.crack_edges)
-              cracks << block_mesh.vertices[e[0]] << ' '
-                     << block_mesh.vertices[e[1]] << '\n';
-          }
-      }
-    if (out_parameters.write_hdf5)
-      {
-        const std::string          name = "solution-" + number + ".h5";
-        DataOutBase::DataOutFilter filter(
-          DataOutBase::DataOutFilterFlags(true, true));
-        data_out.write_filtered_data(filter);
-        data_out.write_hdf5_parallel(filter,
-                                     out_parameters.directory + name,
-                                     MPI_COMM_SELF);
-        xdmf_entries.push_back(
-          data_out.create_xdmf_entry(filter, name, time, MPI_COMM_SELF));
-        data_out.write_xdmf_file(xdmf_entries,
-                                 out_parameters.directory + "solution.xdmf",
-                                 MPI_COMM_SELF);
-      }
-    ++output_number;
+    visualization.write_frame(*this, parameters.postprocess.postprocessors);
   }
 
 
@@ -2254,11 +1564,13 @@ namespace ndda
           << ", vertices: " << mesh.get_triangulation().n_vertices()
           << ", degrees of freedom: " << dof_handler.n_dofs() << " (P"
           << parameters.control.element_degree << ")\n"
-          << "  constrained nodes: " << node_constraints.size()
+          << "  constrained nodes: "
+          << boundary_constraints.constrained_nodes().size()
           << ", output: " << directory << std::endl;
 
     Timer        wall;
-    double       last_progress = 0;
+    double       last_progress      = 0;
+    unsigned int last_progress_step = 0;
     const double end_time      = parameters.control.end_time;
     const double interval      = parameters.output.interval;
     output_results();
@@ -2288,13 +1600,22 @@ namespace ndda
               parameters.output.progress_interval ||
             time >= end_time * (1. - 1e-12))
           {
-            last_progress     = wall.wall_time();
-            const double rate = time / std::max(wall.wall_time(), 1e-9);
+            // The wall time goes here, to the log; the statistics file
+            // has it only with the 'wall time' postprocessor, so that it
+            // is the same in every run.
+            const double steps_since = step_number - last_progress_step;
+            const double per_step =
+              (wall.wall_time() - last_progress) / std::max(steps_since, 1.);
+            last_progress      = wall.wall_time();
+            last_progress_step = step_number;
+            const double rate  = time / std::max(wall.wall_time(), 1e-9);
             pcout << "  step " << std::setw(7) << step_number
                   << "  t = " << std::setw(12) << std::setprecision(6) << time
                   << " s  dt = " << std::setw(10)
                   << step_controller.last_step_size() << " s"
-                  << "  cuts " << step_controller.n_total_cuts() << "  ETA " << std::setprecision(3)
+                  << "  cuts " << step_controller.n_total_cuts()
+                  << std::setprecision(3) << "  wall " << per_step
+                  << " s/step  ETA "
                   << std::max(0., (end_time - time) / std::max(rate, 1e-300))
                   << " s" << std::endl;
             write_statistics();

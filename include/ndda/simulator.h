@@ -25,8 +25,13 @@
 #include <ndda/contact/contact_handler.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/bolts.h>
+#include <ndda/physics/constraints.h>
+#include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/linear_solver.h>
+#include <ndda/physics/loads.h>
+#include <ndda/postprocess/visualization.h>
 #include <ndda/time/step_controller.h>
 #include <ndda/time/time_integrator.h>
 
@@ -273,6 +278,36 @@ namespace ndda
       return n_cracked_edges;
     }
 
+    /** What the last time step did, for the statistics. */
+    struct StepReport
+    {
+      /// Its size (s), after cuts.
+      double dt = 0;
+      /// Its cuts, and of those the cuts of an unsettled open-close
+      /// iteration.
+      unsigned int cuts            = 0;
+      unsigned int open_close_cuts = 0;
+      /// GMRES iterations of its last solve (0: a fresh factorization).
+      unsigned int solver_iterations = 0;
+      /// Element matrix builds since the start.
+      unsigned int matrix_builds = 0;
+      /// Largest nodal displacement increment (m).
+      double max_increment = 0;
+      /// Whether the scene has fracturing materials.
+      bool fracture = false;
+      /// Crack events since the start; whether the step ended at the
+      /// limit of crack events; edges failing in its last check.
+      unsigned int crack_events    = 0;
+      bool         crack_limit_hit = false;
+      unsigned int failing_edges   = 0;
+    };
+
+    const StepReport &
+    get_step_report() const
+    {
+      return step_report;
+    }
+
     /** Wall time spent in the last call to do_time_step() (s). */
     double
     last_step_wall_time() const
@@ -282,58 +317,6 @@ namespace ndda
     /** @} */
 
   private:
-    /** A constrained node: its two dofs and what prescribes them. */
-    struct NodeConstraint
-    {
-      std::array<types::global_dof_index, 2> dofs;
-      Point<dim>                             position;
-      parameters::ConstraintType             type;
-      /// Unit normal of a roller (the constrained direction).
-      Tensor<1, dim> normal;
-      /// Index into constraint_functions (displacement/velocity/roller).
-      unsigned int function = numbers::invalid_unsigned_int;
-      std::string  name;
-    };
-
-    /** Dof indices and shape values at a fixed material point. */
-    struct PointEvaluator
-    {
-      unsigned int                         cell;
-      std::vector<types::global_dof_index> dofs;
-      /// Value of each local shape function; component in component[i].
-      std::vector<double>       shape_values;
-      std::vector<unsigned int> component;
-    };
-
-    /** Precomputed quadrature data of one loaded boundary face. */
-    struct LoadedFace
-    {
-      unsigned int                         line_load;
-      unsigned int                         cell;
-      unsigned int                         face;
-      std::vector<types::global_dof_index> dofs;
-      std::vector<unsigned int>            component;
-      /// shape_values[q][i] * JxW[q] * thickness
-      std::vector<std::vector<double>> weighted_shape;
-      std::vector<Point<dim>>          points;
-      std::vector<Tensor<1, dim>>      normals;
-    };
-
-    struct Bolt
-    {
-      std::array<types::global_dof_index, 4> dofs;
-      Point<dim>                             first, second;
-      double                                 stiffness;
-      double                                 pretension;
-      /// Spring force k * elongation, accumulated (N, tension positive).
-      double axial_force = 0;
-    };
-
-    /** Current positions of a bolt's anchors and the unit vector from the
-     * second to the first. */
-    std::pair<std::array<Point<dim>, 2>, Tensor<1, dim>>
-    bolt_geometry(const Bolt &bolt) const;
-
     void
     make_mesh(const Triangulation<dim> *triangulation);
     /**
@@ -348,8 +331,6 @@ namespace ndda
     setup_constraints();
     void
     setup_loads();
-    void
-    update_loaded_faces();
     void
     setup_measure_points();
     void
@@ -422,13 +403,9 @@ namespace ndda
      */
     void
     commit_step(const Vector<double> &d, const double dt);
-    /** The rows of the statistics file for the step just committed. */
+    /** The step report and the statistics row of the step just done. */
     void
-    record_statistics();
-    void
-    prescribed_increment(const double    t0,
-                         const double    dt,
-                         Vector<double> &increment) const;
+    record_statistics(const double dt);
     /**
      * The stresses of cell @p c at the end of a step with increment @p d:
      * the start stresses turned by the cell's rotation in the increment
@@ -458,13 +435,6 @@ namespace ndda
     void
     write_statistics() const;
 
-    /** Find the vertex at @p p; throws naming @p entry if there is none. */
-    unsigned int
-    find_vertex(const Point<dim> &p, const std::string &entry) const;
-    /** Locate @p p in the mesh; throws naming @p entry if it is outside. */
-    PointEvaluator
-    make_point_evaluator(const Point<dim> &p, const std::string &entry) const;
-
     parameters::Parameters              parameters;
     ParameterHandler                    prm;
     std::unique_ptr<Triangulation<dim>> user_triangulation;
@@ -484,21 +454,12 @@ namespace ndda
 
     ElementCache<dim> element_cache;
 
-    /// Dof indices of every cell, cell after cell.
-    std::vector<types::global_dof_index> cell_dof_indices;
-    /// Vector component of each local dof.
-    std::vector<unsigned int> local_component;
-    /// The (x, y) dofs of every vertex of the triangulation.
-    std::vector<std::array<types::global_dof_index, 2>> vertex_dofs;
-    /// The (x, y) dofs of every node (vertices and, for P2, edge nodes).
-    std::vector<std::array<types::global_dof_index, 2>> node_dofs;
-    /// Node of every dof.
-    std::vector<unsigned int> dof_to_node;
+    /// The dofs as index arrays, for the loops of the time step.
+    DofMap dof_map;
 
-    AffineConstraints<double>                         constraints;
-    std::vector<NodeConstraint>                       node_constraints;
-    std::vector<std::unique_ptr<FunctionParser<dim>>> constraint_functions;
-    double                                            penalty_stiffness = 0;
+    Constraints boundary_constraints;
+    /// Stiffness of the penalty springs of Constraint method = penalty.
+    double penalty_stiffness = 0;
 
     /// Couplings of elements and bolts, before contacts and condensation.
     SparsityPattern base_sparsity;
@@ -532,7 +493,6 @@ namespace ndda
     /// (ContactHandler::newmark_correction()).
     Vector<double> inertia_correction;
     Vector<double> internal_force;
-    Vector<double> gravity_load[dim];
     /// External force at the present time, and at the end of the step
     /// being solved (for the work of the loads).
     Vector<double> external_force, step_external_force;
@@ -541,12 +501,8 @@ namespace ndda
 
     std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
 
-    std::unique_ptr<FunctionParser<dim>>              gravity;
-    std::vector<std::unique_ptr<FunctionParser<dim>>> point_load_functions;
-    std::vector<PointEvaluator>                       point_load_points;
-    std::vector<std::unique_ptr<FunctionParser<dim>>> line_load_functions;
-    std::vector<LoadedFace>                           loaded_faces;
-    std::vector<Bolt>                                 bolts;
+    ExternalLoads loads;
+    Bolts         bolts;
 
     std::vector<PointEvaluator>             measure_points;
     std::vector<std::vector<MeasureSample>> measure_histories;
@@ -578,11 +534,10 @@ namespace ndda
     unsigned int                        n_cracked_edges  = 0;
     bool                                crack_limit_hit  = false;
 
-    TableHandler                                statistics;
-    double                                      next_output_time = 0;
-    unsigned int                                output_number    = 0;
-    std::vector<std::pair<double, std::string>> pvd_records;
-    std::vector<XDMFEntry>                      xdmf_entries;
+    StepReport                       step_report;
+    TableHandler                     statistics;
+    double                           next_output_time = 0;
+    postprocess::VisualizationWriter visualization;
   };
 } // namespace ndda
 

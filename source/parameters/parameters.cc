@@ -1193,6 +1193,7 @@ namespace ndda
       Bolts::declare_parameters(prm, names.bolts);
       Output::declare_parameters(prm);
       fracture::Parameters::declare_parameters(prm);
+      postprocess::Parameters::declare_parameters(prm);
     }
 
 
@@ -1296,6 +1297,7 @@ namespace ndda
       bolts.parse_parameters(prm, names.bolts);
       fracture.parse_parameters(prm);
       output.parse_parameters(prm, scene_name);
+      postprocess.parse_parameters(prm);
 
       AssertThrow(!output.write_hdf5 || control.element_degree == 1,
                   ExcMessage("Output/Write hdf5: HDF5/XDMF output in "

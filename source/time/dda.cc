@@ -6,12 +6,6 @@ namespace ndda
 {
   namespace time
   {
-    void
-    DDA::declare_parameters(ParameterHandler &)
-    {}
-
-
-
     double
     DDA::mass_coefficient(const double dt) const
     {

@@ -6,12 +6,6 @@ namespace ndda
 {
   namespace time
   {
-    void
-    Newmark::declare_parameters(ParameterHandler &)
-    {}
-
-
-
     double
     Newmark::mass_coefficient(const double dt) const
     {

@@ -26,6 +26,12 @@ namespace ndda
 
 
     void
+    TimeIntegrator::declare_parameters(ParameterHandler &)
+    {}
+
+
+
+    void
     TimeIntegrator::parse_parameters(ParameterHandler &)
     {}
 

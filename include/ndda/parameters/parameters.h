@@ -7,6 +7,7 @@
 
 #include <ndda/fracture/fracture_criterion.h>
 #include <ndda/geometry/block_mesh.h>
+#include <ndda/postprocess/postprocessor.h>
 #include <ndda/time/time_integrator.h>
 
 #include <memory>
@@ -329,6 +330,7 @@ namespace ndda
       Bolts                bolts;
       Output               output;
       fracture::Parameters fracture;
+      postprocess::Parameters postprocess;
 
       /** The name lists that decide which subsections exist. */
       struct NameLists

@@ -20,9 +20,6 @@ namespace ndda
     class DDA : public TimeIntegrator
     {
     public:
-      static void
-      declare_parameters(ParameterHandler &prm);
-
       double
       mass_coefficient(const double dt) const override;
 

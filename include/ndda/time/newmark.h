@@ -21,9 +21,6 @@ namespace ndda
     class Newmark : public TimeIntegrator
     {
     public:
-      static void
-      declare_parameters(ParameterHandler &prm);
-
       double
       mass_coefficient(const double dt) const override;
 

@@ -65,6 +65,14 @@ namespace ndda
     public:
       virtual ~TimeIntegrator() = default;
 
+      /**
+       * Declare the integrator's parameters (its subsection is entered).
+       * The default declares none; a scheme with parameters hides it with
+       * its own.
+       */
+      static void
+      declare_parameters(ParameterHandler &prm);
+
       /** Read the integrator's parameters (its subsection is entered). */
       virtual void
       parse_parameters(ParameterHandler &prm);

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_base_utilities_h
+#define ndda_base_utilities_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+
+#include <ndda/geometry/block_mesh.h>
+
+#include <memory>
+#include <string>
+
+namespace ndda
+{
+  /** "(x, y)" for messages. */
+  std::string
+  to_string(const dealii::Point<2> &p);
+
+  /** Distance (m) of @p p to the segment @p s. */
+  double
+  distance_to_segment(const dealii::Point<2> &p, const geometry::Segment &s);
+
+  /**
+   * A muparser function of (x, y) or, with @p time_dependent, of (x, y, t)
+   * with @p n_components components separated by ';' and the constant pi.
+   * The expressions were checked when the parameters were read.
+   */
+  std::unique_ptr<dealii::FunctionParser<2>>
+  make_function(const std::string &expression,
+                const unsigned int n_components,
+                const bool         time_dependent);
+
+  /**
+   * The distance below which two points of a scene are the same point:
+   * 1e-8 of the diagonal of the box @p lower - @p upper, at least 1e-8 m.
+   */
+  double
+  point_tolerance(const dealii::Point<2> &lower, const dealii::Point<2> &upper);
+} // namespace ndda
+
+#endif

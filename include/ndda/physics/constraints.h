@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_physics_constraints_h
+#define ndda_physics_constraints_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/mapping.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ndda/mesh/crackable_mesh.h>
+#include <ndda/parameters/parameters.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ndda
+{
+  /**
+   * The nodes of the finite element space, located: the support point and
+   * vector component of every dof, the other dof of the same node, and
+   * which dofs lie on the boundary. Constraints and bolts find their nodes
+   * through it.
+   *
+   * @ingroup physics
+   */
+  struct NodeLocator
+  {
+    using index = dealii::types::global_dof_index;
+
+    NodeLocator(const CrackableMesh         &mesh,
+                const dealii::DoFHandler<2> &dof_handler,
+                const dealii::Mapping<2>    &mapping);
+
+    /**
+     * The x dofs of the nodes at the mesh vertex at @p p (one per block
+     * that has a vertex there); throws naming @p entry if @p p is not a
+     * vertex of the mesh.
+     */
+    std::vector<index>
+    nodes_at_vertex(const Point<2> &p, const std::string &entry) const;
+
+    /** The x dofs of the boundary nodes on the segment @p segment. */
+    std::vector<index>
+    boundary_nodes_on(const geometry::Segment &segment) const;
+
+    const CrackableMesh               &mesh;
+    std::vector<Point<2>>              support_points;
+    std::vector<unsigned int>          component;
+    std::vector<index>                 partner;
+    std::vector<bool>                  on_boundary;
+    double                             tolerance;
+  };
+
+  /**
+   * Displacement constraints (thesis 3.9): fixed points, rollers at any
+   * angle and prescribed displacement or velocity histories, on points and
+   * boundary segments. Exact constraints go through deal.II's
+   * AffineConstraints (homogeneous; the prescribed values enter as an
+   * increment added after the solve); the thesis's penalty springs stay
+   * available (Control/Constraint method).
+   *
+   * @ingroup physics
+   */
+  class Constraints
+  {
+  public:
+    using index = dealii::types::global_dof_index;
+
+    /** A constrained node: its two dofs and what prescribes them. */
+    struct NodeConstraint
+    {
+      std::array<index, 2>       dofs;
+      Point<2>                   position;
+      parameters::ConstraintType type;
+      /// Unit normal of a roller (the constrained direction).
+      Tensor<1, 2> normal;
+      /// Index into the history functions (displacement/velocity/roller).
+      unsigned int function = dealii::numbers::invalid_unsigned_int;
+      std::string  name;
+    };
+
+    /**
+     * Find the constrained nodes of @p conditions (throws naming the entry
+     * for a point that is not a vertex or a segment without boundary
+     * nodes) and build the AffineConstraints of the exact method.
+     */
+    void
+    setup(const parameters::BoundaryConditions &conditions,
+          const parameters::ConstraintMethod    method,
+          const NodeLocator                    &nodes);
+
+    const dealii::AffineConstraints<double> &
+    affine_constraints() const
+    {
+      return constraints;
+    }
+
+    const std::vector<NodeConstraint> &
+    constrained_nodes() const
+    {
+      return node_constraints;
+    }
+
+    bool
+    exact() const
+    {
+      return method == parameters::ConstraintMethod::exact;
+    }
+
+    /**
+     * The increment that brings every constrained node from its present
+     * displacement (@p displacement) to its prescribed value at
+     * @p t0 + @p dt (so that no error accumulates); zero elsewhere.
+     */
+    void
+    prescribed_increment(const double          t0,
+                         const double          dt,
+                         const Vector<double> &displacement,
+                         Vector<double>       &increment) const;
+
+    /** Penalty method: add the springs of stiffness @p k to @p matrix. */
+    void
+    add_penalty_springs(const double                  k,
+                        dealii::SparseMatrix<double> &matrix) const;
+
+    /**
+     * Penalty method: add the springs' forces k * prescribed to @p rhs.
+     */
+    void
+    add_penalty_forces(const double          k,
+                       const Vector<double> &prescribed,
+                       Vector<double>       &rhs) const;
+
+  private:
+    parameters::ConstraintMethod method = parameters::ConstraintMethod::exact;
+    dealii::AffineConstraints<double>                       constraints;
+    std::vector<NodeConstraint>                             node_constraints;
+    std::vector<std::unique_ptr<dealii::FunctionParser<2>>> functions;
+  };
+} // namespace ndda
+
+#endif

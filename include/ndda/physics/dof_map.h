@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_physics_dof_map_h
+#define ndda_physics_dof_map_h
+
+#include <deal.II/base/types.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <array>
+#include <vector>
+
+namespace ndda
+{
+  /**
+   * The degrees of freedom of the vector finite element space as plain
+   * index arrays, for the loops of the time step (deal.II's iterators and
+   * get_dof_indices() cost more than the arithmetic of a P1 cell), and as
+   * the read-only view that contacts, loads and constraints get of the
+   * space. A node is a support point of the scalar element (a vertex, or
+   * for P2 an edge midpoint), with its x and y dofs.
+   *
+   * @ingroup physics
+   */
+  struct DofMap
+  {
+    using index = dealii::types::global_dof_index;
+
+    /** Rebuild from @p dof_handler (after distribute_dofs()). */
+    void
+    reinit(const dealii::DoFHandler<2> &dof_handler);
+
+    /** The dofs of active cell @p c, dofs_per_cell of them. */
+    const index *
+    dofs_of_cell(const unsigned int c) const
+    {
+      return cell_dofs.data() + std::size_t(c) * dofs_per_cell;
+    }
+
+    unsigned int
+    n_cells() const
+    {
+      return dofs_per_cell == 0 ? 0 : cell_dofs.size() / dofs_per_cell;
+    }
+
+    /// Number of dofs of the space.
+    unsigned int n_dofs = 0;
+    /// Dofs of a cell.
+    unsigned int dofs_per_cell = 0;
+    /// Dof indices of every cell, cell after cell.
+    std::vector<index> cell_dofs;
+    /// Vector component of each local dof.
+    std::vector<unsigned int> local_component;
+    /// The (x, y) dofs of every vertex of the triangulation.
+    std::vector<std::array<index, 2>> vertex_dofs;
+    /// The (x, y) dofs of every node (vertices and, for P2, edge nodes).
+    std::vector<std::array<index, 2>> node_dofs;
+    /// Node of every dof.
+    std::vector<unsigned int> dof_to_node;
+  };
+} // namespace ndda
+
+#endif

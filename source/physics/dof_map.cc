@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <deal.II/base/numbers.h>
+
+#include <ndda/physics/dof_map.h>
+
+namespace ndda
+{
+  void
+  DofMap::reinit(const dealii::DoFHandler<2> &dof_handler)
+  {
+    const auto &fe = dof_handler.get_fe();
+    n_dofs         = dof_handler.n_dofs();
+    dofs_per_cell  = fe.n_dofs_per_cell();
+    cell_dofs.resize(dof_handler.get_triangulation().n_active_cells() *
+                     dofs_per_cell);
+    local_component.resize(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      local_component[i] = fe.system_to_component_index(i).first;
+    vertex_dofs.resize(dof_handler.get_triangulation().n_vertices());
+    dof_to_node.assign(n_dofs, dealii::numbers::invalid_unsigned_int);
+    node_dofs.clear();
+    std::vector<index> dofs(dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        std::copy(dofs.begin(),
+                  dofs.end(),
+                  cell_dofs.begin() +
+                    cell->active_cell_index() * dofs_per_cell);
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          for (unsigned int c = 0; c < 2; ++c)
+            vertex_dofs[cell->vertex_index(v)][c] =
+              cell->vertex_dof_index(v, c);
+        // A node is numbered when its x dof is first met; its y dof is the
+        // dof of component 1 at the same support point.
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            const auto [component, base] = fe.system_to_component_index(i);
+            if (component == 0 &&
+                dof_to_node[dofs[i]] == dealii::numbers::invalid_unsigned_int)
+              {
+                const auto j = dofs[fe.component_to_system_index(1, base)];
+                dof_to_node[dofs[i]] = dof_to_node[j] = node_dofs.size();
+                node_dofs.push_back({{dofs[i], j}});
+              }
+          }
+      }
+  }
+} // namespace ndda

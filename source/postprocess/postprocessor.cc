@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The postprocessor registry, the defaults of the interface and
+// subsection Postprocess.
+
+#include <deal.II/base/utilities.h>
+
+#include <ndda/postprocess/postprocessor.h>
+
+namespace ndda
+{
+  namespace postprocess
+  {
+    using namespace dealii;
+
+    // The built-in postprocessors, see NDDA_REGISTER_PLUGIN.
+    void
+    link_plugin_DisplacementField();
+    void
+    link_plugin_VelocityField();
+    void
+    link_plugin_StressFields();
+    void
+    link_plugin_BlockAndMaterial();
+    void
+    link_plugin_CrackFaces();
+    void
+    link_plugin_TimeStepStatistics();
+    void
+    link_plugin_EnergyStatistics();
+    void
+    link_plugin_FractureStatistics();
+    void
+    link_plugin_ContactStatistics();
+    void
+    link_plugin_WallTime();
+
+    void
+    Postprocessor::link_builtin_plugins()
+    {
+      link_plugin_DisplacementField();
+      link_plugin_VelocityField();
+      link_plugin_StressFields();
+      link_plugin_BlockAndMaterial();
+      link_plugin_CrackFaces();
+      link_plugin_TimeStepStatistics();
+      link_plugin_EnergyStatistics();
+      link_plugin_FractureStatistics();
+      link_plugin_ContactStatistics();
+      link_plugin_WallTime();
+    }
+
+
+
+    void
+    Postprocessor::declare_parameters(ParameterHandler &)
+    {}
+
+
+
+    void
+    Postprocessor::parse_parameters(ParameterHandler &)
+    {}
+
+
+
+    void
+    Postprocessor::add_fields(const Simulator<2> &, Frame &) const
+    {}
+
+
+
+    void
+    Postprocessor::add_statistics(const Simulator<2> &, TableHandler &) const
+    {}
+
+
+
+    void
+    add_scientific(TableHandler      &statistics,
+                   const std::string &column,
+                   const double       value)
+    {
+      statistics.add_value(column, value);
+      statistics.set_scientific(column, true);
+      statistics.set_precision(column, 6);
+    }
+
+
+
+    namespace
+    {
+      /// The default selection: everything ndda writes, in the order of
+      /// the VTU fields and the statistics columns.
+      const char *default_list =
+        "displacement, velocity, stress, block and material, crack faces, "
+        "time step, energy, fracture, contact";
+    } // namespace
+
+
+
+    void
+    Parameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Postprocess");
+      {
+        prm.declare_entry(
+          "List of postprocessors",
+          default_list,
+          Patterns::MultipleSelection(PostprocessorRegistry::joined_names()),
+          PostprocessorRegistry::documentation(
+            "What a run writes: VTU fields (at every output time) and "
+            "groups of columns of the statistics file (after every step), "
+            "each a plugin (include/ndda/postprocess/postprocessor.h), in "
+            "the order given. Each reads its own entries from the "
+            "subsection of its name. The postprocessors:"));
+        PostprocessorRegistry::declare_parameters(prm);
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Parameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Postprocess");
+      {
+        names = Utilities::split_string_list(prm.get("List of postprocessors"));
+        postprocessors.clear();
+        for (const std::string &name : names)
+          {
+            AssertThrow(std::count(names.begin(), names.end(), name) == 1,
+                        ExcMessage("Postprocess/List of postprocessors: '" +
+                                   name +
+                                   "' is listed twice. Give each "
+                                   "postprocessor once."));
+            postprocessors.push_back(
+              PostprocessorRegistry::create_and_parse(name, prm));
+          }
+      }
+      prm.leave_subsection();
+    }
+  } // namespace postprocess
+} // namespace ndda

@@ -1,0 +1,381 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The time layer without a simulator (include/ndda/time/):
+//
+//  - every integrator (DDA, Newmark, static around each, quasi-static) on
+//    one degree of freedom, a mass m on a spring k: the coefficients of one
+//    step, its right-hand side and the velocity and inertia force it
+//    commits, against the formulas of doc/theory.md computed by hand;
+//  - a harmonic oscillator over ten periods: Newmark keeps the energy to
+//    round-off and its period error is the known (omega dt)^2 / 12; DDA
+//    loses energy (numerical damping);
+//  - the registry: names, an unknown name, a scheme registered by this
+//    program, subsection Control read from a .prm text;
+//  - the step controller: attempt sizes, cuts, growth after a cut, the end
+//    time, and the messages of its three limits.
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <ndda/time/dda.h>
+#include <ndda/time/newmark.h>
+#include <ndda/time/step_controller.h>
+#include <ndda/time/time_integrator.h>
+
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <iomanip>
+#include <iostream>
+
+#include "tests.h"
+
+using namespace dealii;
+using namespace ndda::time;
+using ndda_tests::check;
+
+/** A scheme defined by this program: DDA with another name. */
+class Shi : public DDA
+{
+public:
+  static void
+  declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Note", "", Patterns::Anything(), "Unused.");
+  }
+};
+
+NDDA_REGISTER_PLUGIN(TimeIntegrator,
+                     Shi,
+                     "Shi",
+                     "A test scheme: DDA under another name.")
+
+namespace
+{
+  /** A 1 x 1 matrix with entry @p value. */
+  struct Scalar
+  {
+    explicit Scalar(const double value)
+    {
+      pattern.reinit(1, 1, 1);
+      pattern.add(0, 0);
+      pattern.compress();
+      matrix.reinit(pattern);
+      matrix.set(0, 0, value);
+    }
+    SparsityPattern      pattern;
+    SparseMatrix<double> matrix;
+  };
+
+  Vector<double>
+  one(const double value)
+  {
+    Vector<double> v(1);
+    v[0] = value;
+    return v;
+  }
+
+  std::string
+  message_of(const std::function<void()> &f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream out;
+        e.print_info(out);
+        return ndda_tests::fold_whitespace(out.str());
+      }
+    return "";
+  }
+
+  /**
+   * One step of each integrator: m = 2 kg, k = 50 N/m, v0 = 3 m/s,
+   * M a0 = -4 N, no external force, dt = 0.1 s.
+   */
+  void
+  test_one_step()
+  {
+    std::cout << "One step, m = 2, k = 50, v0 = 3, M a0 = -4, dt = 0.1"
+              << std::endl;
+    const double m = 2, k = 50, dt = 0.1;
+    const Scalar mass(m);
+    for (const AnalysisType analysis : {AnalysisType::dynamic_analysis,
+                                        AnalysisType::static_analysis,
+                                        AnalysisType::quasi_static})
+      for (const std::string scheme : {"DDA", "Newmark"})
+        {
+          const auto integrator = create_time_integrator(
+            TimeIntegratorRegistry::create(scheme), analysis);
+          KinematicState state{one(3.), one(-4.)};
+          Vector<double> rhs(1);
+          integrator->add_inertia_terms(mass.matrix, state, dt, rhs);
+          const double c = integrator->mass_coefficient(dt);
+          const double d = rhs[0] / (k + c * m);
+          integrator->update(one(d), dt, mass.matrix, one(0.), state);
+          const char *name =
+            analysis == AnalysisType::dynamic_analysis ? "dynamic" :
+            analysis == AnalysisType::static_analysis  ? "static" :
+                                                         "quasi-static";
+          std::cout << "  " << std::setw(12) << name << ' ' << std::setw(7)
+                    << scheme << ": c_M = " << c << ", rhs = " << rhs[0]
+                    << ", d = " << d << ", v1 = " << state.velocity[0]
+                    << ", M a1 = " << state.inertia_force[0]
+                    << ", averages contacts: "
+                    << integrator->averages_contact_forces()
+                    << ", initial acceleration: "
+                    << integrator->needs_initial_acceleration() << std::endl;
+
+          // The formulas of doc/theory.md.
+          double c_ref = 0, rhs_ref = 0, v_ref = 0, ma_ref = -4;
+          if (analysis != AnalysisType::quasi_static)
+            {
+              c_ref   = (scheme == "DDA" ? 2. : 4.) / (dt * dt);
+              rhs_ref = (scheme == "DDA" ? 2. : 4.) / dt * m * 3. +
+                        (scheme == "DDA" ? 0. : -4.);
+              v_ref   = 2 * d / dt - 3.;
+              if (scheme == "Newmark")
+                ma_ref = 4. / (dt * dt) * m * (d - dt * 3.) + 4.;
+            }
+          else
+            {
+              v_ref  = d / dt;
+              ma_ref = 0;
+            }
+          if (analysis == AnalysisType::static_analysis)
+            v_ref = ma_ref = 0;
+          check(std::abs(c - c_ref) <= 1e-12 * c_ref &&
+                  std::abs(rhs[0] - rhs_ref) <= 1e-12 * std::abs(rhs_ref) &&
+                  std::abs(state.velocity[0] - v_ref) <= 1e-12 &&
+                  std::abs(state.inertia_force[0] - ma_ref) <= 1e-12,
+                std::string(name) + " " + scheme + " step");
+          check(integrator->averages_contact_forces() ==
+                    (scheme == "Newmark" &&
+                     analysis != AnalysisType::quasi_static) &&
+                  integrator->needs_initial_acceleration() ==
+                    (scheme == "Newmark" &&
+                     analysis == AnalysisType::dynamic_analysis),
+                std::string(name) + " " + scheme + " flags");
+        }
+  }
+
+  /**
+   * A free oscillator, m = 1, k = (2 pi)^2 (period 1 s), x0 = 1, v0 = 0,
+   * dt = 0.02, ten periods: the energy at the end over the energy at the
+   * start, and Newmark's phase after ten periods against its known period
+   * elongation T (1 + (omega dt)^2 / 12).
+   */
+  void
+  test_oscillator()
+  {
+    std::cout << "Oscillator, period 1 s, dt = 0.02 s, 10 periods"
+              << std::endl;
+    const double m = 1, k = 4 * M_PI * M_PI, dt = 0.02;
+    const Scalar mass(m);
+    for (const std::string scheme : {"Newmark", "DDA"})
+      {
+        const auto integrator =
+          create_time_integrator(TimeIntegratorRegistry::create(scheme),
+                                 AnalysisType::dynamic_analysis);
+        double         x = 1;
+        KinematicState state{one(0.), one(-k * x)};
+        const unsigned n_steps = 500;
+        double         x_previous = x, t_last_crossing = 0;
+        for (unsigned int n = 1; n <= n_steps; ++n)
+          {
+            Vector<double> rhs(1);
+            rhs[0] = -k * x;
+            integrator->add_inertia_terms(mass.matrix, state, dt, rhs);
+            const double d =
+              rhs[0] / (k + integrator->mass_coefficient(dt) * m);
+            integrator->update(one(d), dt, mass.matrix, one(0.), state);
+            x += d;
+            // Upward zero crossings, by linear interpolation.
+            if (x_previous < 0 && x >= 0)
+              t_last_crossing = (n - 1 + x_previous / (x_previous - x)) * dt;
+            x_previous = x;
+          }
+        const double energy =
+          0.5 * m * state.velocity[0] * state.velocity[0] + 0.5 * k * x * x;
+        const double ratio = energy / (0.5 * k);
+        std::cout << "  " << std::setw(7) << scheme
+                  << ": energy after / before = " << std::setprecision(8)
+                  << ratio << std::setprecision(6) << std::endl;
+        if (scheme == "Newmark")
+          {
+            // The tenth upward crossing is at 9.75 periods.
+            const double w        = 2 * M_PI;
+            const double period   = 1. + (w * dt) * (w * dt) / 12.;
+            const double expected = 9.75 * period;
+            std::cout << "  Newmark: 10th upward crossing at "
+                      << std::setprecision(8) << t_last_crossing
+                      << " s, expected " << expected << " s"
+                      << std::setprecision(6) << std::endl;
+            check(std::abs(ratio - 1.) < 1e-10, "Newmark keeps the energy");
+            check(std::abs(t_last_crossing - expected) < 2e-4,
+                  "Newmark's period elongation");
+          }
+        else
+          check(ratio < 0.9, "DDA damps the oscillator");
+      }
+  }
+
+  void
+  test_registry()
+  {
+    std::cout << "Registry" << std::endl;
+    std::cout << "  names: " << TimeIntegratorRegistry::joined_names()
+              << std::endl;
+    check(TimeIntegratorRegistry::joined_names() == "DDA|Newmark|Shi",
+          "registered names");
+    const std::string unknown =
+      message_of([]() { TimeIntegratorRegistry::create("Verlet"); });
+    std::cout << "  unknown name: " << unknown << std::endl;
+    check(unknown.find("Control/Time integrator: 'Verlet' is not a time "
+                       "integrator. Known time integrators: DDA, Newmark, "
+                       "Shi.") != std::string::npos,
+          "message for an unknown scheme");
+    const std::string twice = message_of([]() {
+      TimeIntegratorRegistry::add("DDA", "again", &DDA::declare_parameters,
+                                  nullptr);
+    });
+    std::cout << "  registered twice: " << twice << std::endl;
+    check(twice.find("Two time integrators are registered under the name "
+                     "'DDA'") != std::string::npos,
+          "message for a name registered twice");
+
+    // A scene selects the program's own scheme by name.
+    const auto parameters = ndda_tests::read_parameters(R"(
+subsection Control
+  set Time integrator = Shi
+  set Analysis type   = static
+  subsection Shi
+    set Note = selected by name
+  end
+end
+subsection Materials
+  set Names = rock
+  subsection rock
+  end
+end
+subsection Geometry
+  set Blocks = b
+  subsection b
+    set Outer boundary = 0, 0; 1, 0; 1, 1; 0, 1
+    set Material = rock
+    set Mesh size = 0.5
+  end
+end
+)",
+                                                        "shi");
+    std::cout << "  scene: Time integrator = "
+              << parameters.control.time_integrator_name
+              << ", mass coefficient at dt = 0.1: "
+              << parameters.control.time_integrator->mass_coefficient(0.1)
+              << std::endl;
+    check(parameters.control.time_integrator_name == "Shi" &&
+            std::abs(parameters.control.time_integrator->mass_coefficient(
+                       0.1) -
+                     200.) < 1e-10,
+          "a scene with the program's scheme");
+  }
+
+  void
+  test_step_controller()
+  {
+    std::cout << "Step controller" << std::endl;
+    StepController::Limits limits;
+    limits.nominal_step              = 0.1;
+    limits.end_time                  = 0.35;
+    limits.max_cuts                  = 3;
+    limits.max_displacement_ratio    = 0.01;
+    limits.max_open_close_iterations = 6;
+    StepController controller(limits);
+
+    double t = 0;
+    controller.begin_step(1, t);
+    double dt = controller.attempt_size(t);
+    dt        = controller.after_failure(AttemptResult::too_large, dt, 1.);
+    dt = controller.after_failure(AttemptResult::penalty_raised, dt, 1.);
+    dt = controller.after_failure(AttemptResult::not_settled, dt, 1.);
+    controller.accept(dt);
+    t += dt;
+    std::cout << "  step 1: " << dt << " s after " << controller.n_cuts()
+              << " cuts (" << controller.n_open_close_cuts()
+              << " open-close)" << std::endl;
+    check(dt == 0.025 && controller.n_cuts() == 2 &&
+            controller.n_open_close_cuts() == 1,
+          "cuts halve the step, a penalty raise does not");
+    std::vector<double> sizes;
+    for (unsigned int step = 2; t < limits.end_time * (1 - 1e-12); ++step)
+      {
+        controller.begin_step(step, t);
+        dt = controller.attempt_size(t);
+        controller.accept(dt);
+        t += dt;
+        sizes.push_back(dt);
+      }
+    std::cout << "  then:";
+    for (const double s : sizes)
+      std::cout << ' ' << s;
+    std::cout << " (total cuts " << controller.n_total_cuts() << ")"
+              << std::endl;
+    check(sizes.size() == 4 && sizes[0] == 0.05 && sizes[1] == 0.1 &&
+            std::abs(sizes[3] - 0.075) < 1e-12 &&
+            controller.n_total_cuts() == 2,
+          "growth after a cut and the last step to the end time");
+
+    controller.begin_step(7, 0.5);
+    const std::string cuts = message_of([&]() {
+      double size = 0.1;
+      for (;;)
+        size = controller.after_failure(AttemptResult::inverted, size, 2.);
+    });
+    std::cout << "  too many cuts: " << cuts << std::endl;
+    check(cuts.find("Step 7 at t = 0.5: a cell still turns inside out") !=
+              std::string::npos &&
+            cuts.find("after 3 step cuts") != std::string::npos,
+          "message of the cut limit");
+
+    controller.begin_step(8, 0.5);
+    const std::string raises = message_of([&]() {
+      for (;;)
+        controller.after_failure(AttemptResult::penalty_raised, 0.1, 0.);
+    });
+    std::cout << "  too many raises: " << raises << std::endl;
+    check(raises.find("the automatic penalty was doubled 30 times") !=
+            std::string::npos,
+          "message of the raise limit");
+
+    StepController crawling(limits);
+    const std::string crawl = message_of([&]() {
+      for (unsigned int step = 1;; ++step)
+        {
+          crawling.begin_step(step, 0.);
+          crawling.accept(1e-5);
+          crawling.check_progress(step * 1e-5);
+        }
+    });
+    std::cout << "  crawling: " << crawl << std::endl;
+    check(crawl.find("Step 1000 at t = ") != std::string::npos &&
+            crawl.find(": 1000 steps in a row were cut") !=
+            std::string::npos,
+          "message of the crawl guard");
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  std::cout << std::setprecision(6);
+  test_one_step();
+  test_oscillator();
+  test_registry();
+  test_step_controller();
+  std::cout << "OK" << std::endl;
+  return 0;
+}
