@@ -3,6 +3,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 
+#include <deal.II/lac/full_matrix.h>
+
 #include <ndda/contact/contact_handler.h>
 
 #include <algorithm>
@@ -37,29 +39,6 @@ namespace ndda
 
 
 
-    double
-    ContactHandler::Option::normal_gap(const dealii::Vector<double> &d) const
-    {
-      double g = gap;
-      for (unsigned int k = 0; k < dofs.size(); ++k)
-        g += wn[k] * d[dofs[k]];
-      return g;
-    }
-
-
-
-    double
-    ContactHandler::Option::tangential_increment(
-      const dealii::Vector<double> &d) const
-    {
-      double s = 0;
-      for (unsigned int k = 0; k < dofs.size(); ++k)
-        s += wt[k] * d[dofs[k]];
-      return s;
-    }
-
-
-
     void
     ContactHandler::initialize(const std::vector<BoundaryEdge> &edges_in,
                                const std::vector<double>       &friction_in,
@@ -71,6 +50,8 @@ namespace ndda
       edge_friction = friction_in;
       dofs          = dofs_in;
       settings      = settings_in;
+      if (!settings.law)
+        settings.law = create_contact_law(default_contact_law);
 
       const unsigned int n_vertices = dofs.vertex_dofs->size();
       edges_at_vertex.assign(n_vertices, {});
@@ -112,7 +93,7 @@ namespace ndda
 
 
 
-    ContactHandler::Option
+    Option
     ContactHandler::make_option(const std::vector<Point<2>> &vertices,
                                 const unsigned int           vertex,
                                 const unsigned int           edge) const
@@ -283,13 +264,12 @@ namespace ndda
         {
           c.state  = State::locked;
           c.anchor = c.options[c.chosen].ratio;
-          // Faces that touch when the run starts are joints: their
-          // cohesion and tension hold until the contact breaks.
-          c.bonded =
-            first_step &&
-            (settings.bond_tension > 0. || settings.bond_cohesion > 0.) &&
-            c.vertex_a == invalid &&
-            bonding_side(c.options[0].vertex, c.options[0].edge);
+          // Faces that touch when the run starts are joints: the contact
+          // law may bond them (cohesion and tension) until they break.
+          c.bonded = first_step &&
+                     settings.law->bonds_initial_contacts(settings) &&
+                     c.vertex_a == invalid &&
+                     bonding_side(c.options[0].vertex, c.options[0].edge);
         }
       // Open and sliding contacts anchor the shear spring at the vertex's
       // present projection, should they lock within this step.
@@ -579,11 +559,9 @@ namespace ndda
             c.bond_length = bond_length(vertices,
                                         c.options[c.chosen].vertex,
                                         c.options[c.chosen].edge);
-          c.start_bonded = c.bonded;
-          c.start_state  = c.state;
+          c.start        = c;
           c.start_chosen = c.chosen;
-          c.start_anchor = c.anchor;
-          c.start_sign   = c.sign;
+          c.start_bonded = c.bonded;
           for (const Option &o : c.options)
             couplings.emplace_back(o.vertex, edges[o.edge].cell);
         }
@@ -601,13 +579,11 @@ namespace ndda
       statistics.n_iterations = 0;
       for (Contact &c : contacts)
         {
-          c.flips  = 0;
-          c.scale  = 1;
-          c.state  = c.start_state;
-          c.chosen = c.start_chosen;
-          c.anchor = c.start_anchor;
-          c.sign   = c.start_sign;
-          c.bonded = c.start_bonded;
+          c.flips                        = 0;
+          c.scale                        = 1;
+          static_cast<ContactState &>(c) = c.start;
+          c.chosen                       = c.start_chosen;
+          c.bonded                       = c.start_bonded;
         }
     }
 
@@ -648,14 +624,7 @@ namespace ndda
             }
           if (c.state == State::open || c.chosen == invalid)
             continue;
-          add_springs(c.options[c.chosen],
-                      c.state,
-                      c.anchor,
-                      c.sign,
-                      c.friction,
-                      c.scale,
-                      &matrix,
-                      rhs);
+          add_springs(c.options[c.chosen], c, c.scale, &matrix, rhs);
         }
     }
 
@@ -663,58 +632,23 @@ namespace ndda
 
     void
     ContactHandler::add_springs(const Option                 &o,
-                                const State                   state,
-                                const double                  anchor,
-                                const int                     sign,
-                                const double                  friction,
+                                const ContactState           &contact,
                                 const double                  scale,
                                 dealii::SparseMatrix<double> *matrix,
                                 dealii::Vector<double>       &rhs) const
     {
-      const double       kn = scale * settings.normal_stiffness;
-      const double       ks = settings.shear_ratio * kn;
-      const unsigned int n  = o.dofs.size();
+      if (matrix == nullptr)
+        {
+          settings.law->add_springs(o, contact, scale, settings, nullptr, rhs);
+          return;
+        }
       // The springs' stiffness as one dense n x n block, added to the
       // sparse matrix row by row (one search per row, not per entry).
-      std::vector<double> k(matrix != nullptr ? n * n : 0, 0.);
-      // Normal spring: energy kn/2 (g0 + e_n.d)^2.
+      const unsigned int         n = o.dofs.size();
+      dealii::FullMatrix<double> k(n, n);
+      settings.law->add_springs(o, contact, scale, settings, &k, rhs);
       for (unsigned int i = 0; i < n; ++i)
-        {
-          rhs[o.dofs[i]] -= kn * o.gap * o.wn[i];
-          if (matrix != nullptr)
-            for (unsigned int j = 0; j < n; ++j)
-              k[i * n + j] += kn * o.wn[i] * o.wn[j];
-        }
-      if (state == State::locked)
-        {
-          // Shear spring to the anchor: energy ks/2 (s0 + e_t.d)^2.
-          const double s0 = (o.ratio - anchor) * o.length;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              rhs[o.dofs[i]] -= ks * s0 * o.wt[i];
-              if (matrix != nullptr)
-                for (unsigned int j = 0; j < n; ++j)
-                  k[i * n + j] += ks * o.wt[i] * o.wt[j];
-            }
-        }
-      else if (sign != 0 && friction > 0.)
-        {
-          // Coulomb friction -sign mu N along the tangent, with the normal
-          // force N = -kn (g0 + e_n.d) of the same solve: the force vector
-          // sign mu kn (g0 + e_n.d) e_t, whose d-dependent part goes to the
-          // (non-symmetric) matrix.
-          const double f = sign * friction * kn;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              rhs[o.dofs[i]] += f * o.gap * o.wt[i];
-              if (matrix != nullptr)
-                for (unsigned int j = 0; j < n; ++j)
-                  k[i * n + j] -= f * o.wt[i] * o.wn[j];
-            }
-        }
-      if (matrix != nullptr)
-        for (unsigned int i = 0; i < n; ++i)
-          matrix->add(o.dofs[i], n, o.dofs.data(), &k[i * n], false, false);
+        matrix->add(o.dofs[i], n, o.dofs.data(), &k(i, 0), false, false);
     }
 
 
@@ -731,7 +665,7 @@ namespace ndda
         {
           const bool closed_at_start =
             c.start_chosen != invalid &&
-            (c.start_state == State::locked || c.start_state == State::sliding);
+            (c.start.state == State::locked || c.start.state == State::sliding);
           if (!closed_at_start)
             continue;
           double scale = 0;
@@ -740,14 +674,8 @@ namespace ndda
           else if (c.state == State::open)
             scale = c.scale;
           if (scale > 0.)
-            add_springs(c.options[c.start_chosen],
-                        c.start_state,
-                        c.start_anchor,
-                        c.start_sign,
-                        c.friction,
-                        scale,
-                        nullptr,
-                        force);
+            add_springs(
+              c.options[c.start_chosen], c.start, scale, nullptr, force);
         }
     }
 
@@ -839,75 +767,6 @@ namespace ndda
           sum += (other_end_on_joint ? 0.5 : 1.) * (hi - lo);
         }
       return sum;
-    }
-
-
-
-    bool
-    ContactHandler::bond_holds(const Contact                &c,
-                               const dealii::Vector<double> &d) const
-    {
-      const Option &o       = c.options[c.chosen];
-      const double  kn      = settings.normal_stiffness;
-      const double  g       = o.normal_gap(d);
-      const double  tension = kn * g; // positive: the spring pulls
-      if (g > settings.state_tolerance &&
-          tension > settings.bond_tension * c.bond_length)
-        return false;
-      const double s =
-        (o.ratio - c.anchor) * o.length + o.tangential_increment(d);
-      const double limit =
-        settings.bond_cohesion * c.bond_length - c.friction * tension;
-      return settings.shear_ratio * kn * std::abs(s) <= std::max(limit, 0.);
-    }
-
-
-
-    State
-    ContactHandler::classify(const Contact                &c,
-                             const dealii::Vector<double> &d,
-                             int                          &sign) const
-    {
-      const Option &o = c.options[c.chosen];
-      const double  g = o.normal_gap(d);
-      const bool    was_closed =
-        c.state == State::locked || c.state == State::sliding;
-      sign = 0;
-      // A band of +-tolerance around contact keeps contacts that carry no
-      // force (faces that just touch) from flipping between solves.
-      if (g > settings.state_tolerance ||
-          (!was_closed && g >= -settings.state_tolerance))
-        return State::open;
-      if (g > 0.)
-        {
-          sign = c.sign; // touching without force: keep the state
-          return c.state;
-        }
-
-      const double kn        = settings.normal_stiffness;
-      const double limit     = c.friction * kn * std::max(-g, 0.);
-      const double increment = o.tangential_increment(d);
-      if (limit <= 0.)
-        return State::sliding; // frictionless: never locked
-      if (c.state == State::sliding && c.sign != 0)
-        {
-          // Keeps sliding until the relative motion reverses.
-          if (c.sign * increment >= -settings.state_tolerance)
-            {
-              sign = c.sign;
-              return State::sliding;
-            }
-          return State::locked;
-        }
-      // Open or locked (or sliding without a direction yet): the shear
-      // spring against the Coulomb limit.
-      const double s = (o.ratio - c.anchor) * o.length + increment;
-      if (settings.shear_ratio * kn * std::abs(s) > limit)
-        {
-          sign = s > 0. ? 1 : -1;
-          return State::sliding;
-        }
-      return State::locked;
     }
 
 
@@ -1008,7 +867,7 @@ namespace ndda
       // g0 / (g0 - g1). Without it, every impact would lose kn g0 g1 / 2.
       const bool closed_at_start =
         c.start_chosen != invalid &&
-        (c.start_state == State::locked || c.start_state == State::sliding);
+        (c.start.state == State::locked || c.start.state == State::sliding);
       const bool closed_now =
         c.state == State::locked || c.state == State::sliding;
       double scale = 1;
@@ -1083,12 +942,14 @@ namespace ndda
                       continue;
                     }
                 }
-              c.chosen = option;
-              c.anchor = c.options[option].ratio;
-              c.state  = State::open;
+              const Option &o = c.options[option];
+              c.chosen        = option;
+              c.anchor        = o.ratio;
+              c.state         = State::open;
               int sign;
-              c.state = classify(c, d, sign);
-              c.sign  = sign;
+              c.state =
+                settings.law->classify(o, c, Trial(o, d), settings, sign);
+              c.sign = sign;
               if (c.state == State::open)
                 c.chosen = invalid;
               if (settings.average_start_and_end)
@@ -1099,14 +960,17 @@ namespace ndda
 
           if (c.shadowed)
             continue;
-          int   sign;
-          State state = State::locked;
-          if (c.bonded && bond_holds(c, d))
+          const ContactLaw &law = *settings.law;
+          const Option     &o   = c.options[c.chosen];
+          const Trial       trial(o, d);
+          int               sign;
+          State             state = State::locked;
+          if (c.bonded && law.bond_holds(o, c, trial, settings))
             sign = 0;
           else
             {
               c.bonded = false; // broken for good
-              state    = classify(c, d, sign);
+              state    = law.classify(o, c, trial, settings, sign);
             }
           // Contacts that carry almost no force can make the iteration
           // cycle (closing one opens another). A contact that has changed
@@ -1123,22 +987,7 @@ namespace ndda
           if (state != c.state || sign != c.sign)
             changed = true;
           if (state == State::locked && c.state != State::locked)
-            {
-              c.anchor = c.options[c.chosen].ratio;
-              // A sliding contact whose motion reverses unloads elastically
-              // from the Coulomb limit: its shear spring starts the step
-              // stretched to the friction force it carried. (Starting it
-              // unstretched would drop the friction force to zero at every
-              // reversal, and a resting block that vibrates slightly would
-              // switch between sliding and locked in every step.)
-              if (c.state == State::sliding && c.sign != 0)
-                {
-                  const double g = c.options[c.chosen].normal_gap(d);
-                  c.anchor -=
-                    c.sign * c.friction * std::max(-g, 0.) /
-                    (settings.shear_ratio * c.options[c.chosen].length);
-                }
-            }
+            c.anchor = law.anchor_on_locking(o, c, trial, settings);
           c.state = state;
           c.sign  = sign;
           if (state == State::open && c.vertex_a != invalid)
@@ -1172,7 +1021,6 @@ namespace ndda
     ContactHandler::end_step(const dealii::Vector<double> &d)
     {
       const double kn = settings.normal_stiffness;
-      const double ks = settings.shear_ratio * kn;
       memory.clear();
       open_last_step.clear();
       statistics.n_closed         = 0;
@@ -1220,37 +1068,26 @@ namespace ndda
           if (c.state == State::open || c.chosen == invalid)
             continue;
           ++statistics.n_closed;
-          const Option &o         = c.options[c.chosen];
-          const double  g         = o.normal_gap(d);
-          const double  increment = o.tangential_increment(d);
-          statistics.spring_energy += 0.5 * kn * g * g;
-          // The force at the step's end: the springs' forces at d = 0 plus
-          // their stiffness times d.
+          const Option &o = c.options[c.chosen];
+          const Trial   trial(o, d);
+          statistics.spring_energy +=
+            settings.law->energy(o, c, trial, settings);
+          // The force at the step's end: the springs' forces at d = 0 on
+          // the geometry of the step's end (the solution's gap and, for a
+          // locked contact, its shear displacement).
           {
-            Option at_end = o;
-            at_end.gap    = g;
-            double a      = c.anchor;
+            Option at_end             = o;
+            at_end.gap                = trial.gap;
+            ContactState state_at_end = c;
             if (c.state == State::locked)
-              a -= increment / o.length;
-            add_springs(at_end,
-                        c.state,
-                        a,
-                        c.sign,
-                        c.friction,
-                        c.scale,
-                        nullptr,
-                        end_force);
+              state_at_end.anchor -= trial.increment / o.length;
+            add_springs(at_end, state_at_end, c.scale, nullptr, end_force);
           }
           double anchor = c.anchor;
-          if (c.state == State::locked)
-            {
-              const double s = (o.ratio - c.anchor) * o.length + increment;
-              statistics.spring_energy += 0.5 * ks * s * s;
-            }
-          else
+          if (c.state != State::locked)
             {
               ++statistics.n_sliding;
-              anchor = o.ratio + increment / o.length;
+              anchor = o.ratio + trial.increment / o.length;
             }
           if (c.bonded)
             {

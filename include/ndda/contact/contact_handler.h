@@ -12,7 +12,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/contact/contact_detection.h>
-#include <ndda/parameters/parameters.h>
+#include <ndda/contact/contact_law.h>
+#include <ndda/mesh/boundary_edges.h>
 
 #include <array>
 #include <map>
@@ -25,58 +26,6 @@ namespace ndda
 {
   namespace contact
   {
-    using dealii::Tensor;
-    using dealii::types::global_dof_index;
-
-    /**
-     * State of one contact in the open-close iteration (thesis 2.3.13,
-     * 3.10).
-     */
-    enum class State : unsigned char
-    {
-      /// No spring.
-      open,
-      /// Normal spring and shear spring: the vertex sticks to its anchor
-      /// point on the edge.
-      locked,
-      /// Normal spring and Coulomb friction along the edge.
-      sliding,
-      /// A vertex-vertex pair whose reference edge is not chosen yet, held
-      /// by a temporary spring between the two vertices (thesis 6.2).
-      vertex_spring
-    };
-
-    /** Material data and stiffnesses the contacts need. */
-    struct ContactSettings
-    {
-      /// Normal spring stiffness (N/m).
-      double normal_stiffness = 0;
-      /// Shear spring stiffness over normal spring stiffness.
-      double shear_ratio = 0.4;
-      /// Vertex-vertex resolution.
-      parameters::VertexVertexMethod vertex_vertex_method =
-        parameters::VertexVertexMethod::revised;
-      /// Hysteresis of the open-close criteria (m): a closed contact opens
-      /// when its gap exceeds this, an open one closes when it penetrates
-      /// deeper than this, and a sliding one locks when it moves back by
-      /// more than this.
-      double state_tolerance = 0;
-      /// A vertex-edge candidate that starts deeper than this inside the
-      /// other body, with no contact remembered from the last step, is not
-      /// a contact (the far face of a block thinner than the detection
-      /// distance, m).
-      double ignore_depth = 0;
-      /// The integrator averages start and end forces (Newmark); only used
-      /// for the friction work in the statistics.
-      bool average_start_and_end = false;
-      /// Joint strength per metre of contact length (N/m): tensile
-      /// strength and cohesion of the joint material times the thickness.
-      /// Contacts that touch at the start of the run are bonded with it
-      /// until they break (see doc/contact.md, "Bonded joints").
-      double bond_tension  = 0;
-      double bond_cohesion = 0;
-    };
-
     /**
      * What the contacts need to know of the finite element space: the dofs
      * of every cell (cell after cell), the vector component of each local
@@ -145,6 +94,13 @@ namespace ndda
      * the edge's nodes; doc/contact.md derives the kernels and compares
      * them with thesis 3.76-3.104.
      *
+     * The handler owns the geometry: detection, the narrow phase, the
+     * vertex-vertex resolution of chapter 6, the memory carried from step
+     * to step, and the geometry of bonded joints. What a contact does once
+     * it has an edge — its springs, its state after a solve, its bond and
+     * its energy — is the contact law's (ContactLaw, ContactSettings::law;
+     * "penalty Coulomb" unless the settings name another).
+     *
      * @ingroup contact
      */
     class ContactHandler
@@ -153,7 +109,8 @@ namespace ndda
       /**
        * Set up for a mesh: its boundary edges, the friction coefficient of
        * each edge's side (tan of the joint friction angle of the edge's
-       * material) and the dofs.
+       * material) and the dofs. If @p settings has no contact law, the
+       * handler uses "penalty Coulomb" (default_contact_law).
        */
       void
       initialize(const std::vector<BoundaryEdge> &edges,
@@ -271,34 +228,11 @@ namespace ndda
 
     private:
       /**
-       * A vertex against the line of an edge, with its linearised gap
-       * operators, on the geometry of the step's start.
+       * A contact: a vertex-edge pair or a vertex-vertex pair. Its present
+       * state, anchor, sliding direction, friction and bond length are the
+       * ContactState the contact law sees.
        */
-      struct Option
-      {
-        unsigned int vertex;
-        unsigned int edge;
-        /// Outward unit normal and unit tangent (v0 -> v1) of the edge.
-        Tensor<1, 2> normal, tangent;
-        double       length;
-        /// Projection ratio of the vertex on the edge, not clamped.
-        double ratio;
-        /// Signed distance of the vertex to the edge's line (positive
-        /// outside).
-        double gap;
-        /// Dofs of the vertex, then of the edge's cell.
-        std::vector<global_dof_index> dofs;
-        /// Gap operators e_n and e_t on those dofs.
-        std::vector<double> wn, wt;
-
-        double
-        normal_gap(const dealii::Vector<double> &d) const;
-        double
-        tangential_increment(const dealii::Vector<double> &d) const;
-      };
-
-      /** A contact: a vertex-edge pair or a vertex-vertex pair. */
-      struct Contact
+      struct Contact : ContactState
       {
         /// Potential (vertex, edge) pairs: one for a vertex-edge contact,
         /// the edges at either vertex for a vertex-vertex pair.
@@ -308,19 +242,10 @@ namespace ndda
         unsigned int chosen = invalid;
         /// The two vertices of a vertex-vertex pair.
         unsigned int vertex_a = invalid, vertex_b = invalid;
-        State        state = State::open;
-        /// Shear spring anchor, as a ratio along the chosen edge's line
-        /// (outside [0, 1] for a vertex beyond the edge's end).
-        double anchor = 0;
-        /// Sliding direction along the edge's tangent (+1, -1; 0 without
-        /// friction).
-        int    sign     = 0;
-        double friction = 0;
 
-        State        start_state  = State::open;
+        /// The state at the step's start, and its chosen option.
+        ContactState start;
         unsigned int start_chosen = invalid;
-        double       start_anchor = 0;
-        int          start_sign   = 0;
         /// Changes between open and closed in this step's iteration.
         unsigned int flips = 0;
         /// Newmark: the fraction of the step's end force (closing) or start
@@ -339,8 +264,6 @@ namespace ndda
         /// is tied from one side only (doc/contact.md, "Bonded joints"),
         /// this contact stays open until the bonds next to it break.
         bool shadowed = false;
-        /// Length of joint the contact stands for (m), see bond_length().
-        double bond_length = 0;
       };
 
       /** What is carried from one step to the next, per contact key. */
@@ -368,16 +291,14 @@ namespace ndda
       }
 
       /**
-       * Add the springs of a contact in @p state on option @p o, all
-       * stiffnesses times @p scale: their forces at d = 0 to @p rhs and,
-       * unless @p matrix is null, their stiffness to @p matrix.
+       * Add the springs of the contact law for a contact in state
+       * @p contact on option @p o, all stiffnesses times @p scale: their
+       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
+       * stiffness to @p matrix.
        */
       void
       add_springs(const Option                 &o,
-                  const State                   state,
-                  const double                  anchor,
-                  const int                     sign,
-                  const double                  friction,
+                  const ContactState           &contact,
                   const double                  scale,
                   dealii::SparseMatrix<double> *matrix,
                   dealii::Vector<double>       &rhs) const;
@@ -425,21 +346,6 @@ namespace ndda
        */
       bool
       bonding_side(const unsigned int vertex, const unsigned int edge) const;
-
-      /**
-       * Does the bond of a bonded, locked contact hold under the solution
-       * @p d: the normal spring's tension below tensile strength times
-       * length, and the shear spring's force below the Mohr-Coulomb limit
-       * cohesion times length plus friction times normal force?
-       */
-      bool
-      bond_holds(const Contact &c, const dealii::Vector<double> &d) const;
-
-      /** Closed-state classification of a resolved contact. */
-      State
-      classify(const Contact                &c,
-               const dealii::Vector<double> &d,
-               int                          &sign) const;
 
       /** Choose the entrance edge of a penetrating vertex-vertex pair among
        * the options @p inside of the vertices that entered; invalid for
