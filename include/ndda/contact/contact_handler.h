@@ -276,12 +276,10 @@ namespace ndda
         bool   bonded;
       };
 
-      static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
+      /** A (vertex, boundary edge) pair. */
+      using VertexEdge = std::pair<unsigned int, unsigned int>;
 
-      Option
-      make_option(const std::vector<Point<2>> &vertices,
-                  const unsigned int           vertex,
-                  const unsigned int           edge) const;
+      static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
       /** Key of a (vertex, edge) pair that survives renumbered edges. */
       std::tuple<unsigned int, unsigned int, unsigned int>
@@ -291,21 +289,149 @@ namespace ndda
       }
 
       /**
-       * Add the springs of the contact law for a contact in state
-       * @p contact on option @p o, all stiffnesses times @p scale: their
-       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
-       * stiffness to @p matrix.
+       * @name Narrow phase (source/contact/narrow_phase.cc): from the
+       * candidates of detect() to the contacts of a step.
+       */
+      /** @{ */
+
+      /** The option of @p vertex against @p edge on the @p vertices. */
+      Option
+      make_option(const std::vector<Point<2>> &vertices,
+                  const unsigned int           vertex,
+                  const unsigned int           edge) const;
+
+      /**
+       * Is @p vertex one of the nodes of the cell of @p edge (the third
+       * vertex of a thin triangle, or a mesh neighbour)?
+       */
+      bool
+      in_cell(const unsigned int vertex, const unsigned int edge) const;
+
+      /**
+       * Can @p vertex touch @p edge: do the outward normal at the vertex
+       * (the mean of its edges' normals) and the edge's normal point
+       * against each other? This rules out the other vertices of the same
+       * straight side, every vertex of a convex block against its own
+       * edges, and the far face of a thin block.
+       */
+      bool
+      facing(const std::vector<Point<2>> &vertices,
+             const unsigned int           vertex,
+             const unsigned int           edge) const;
+
+      /**
+       * Is there a state to carry over to @p vertex on @p edge (see
+       * transfer()): the pair's own, or that of the vertex on a
+       * neighbouring edge across a straight vertex?
+       */
+      bool
+      remembered(const std::vector<Point<2>> &vertices,
+                 const unsigned int           vertex,
+                 const unsigned int           edge) const;
+
+      /**
+       * The vertex-edge contacts of a step, sorted by vertex, then edge:
+       * the vertex_edge candidates of each vertex that can touch their
+       * edge, one of two at a convex corner (see touched_edges()).
+       */
+      std::vector<VertexEdge>
+      vertex_edge_pairs(const std::vector<Point<2>>  &vertices,
+                        const std::vector<Candidate> &candidates) const;
+
+      /**
+       * Of the vertex_edge candidates of one vertex, [@p first, @p last),
+       * those that can be contacts: not on an edge of the vertex's own
+       * cell, facing, and not new and deep inside the other body (the far
+       * face of a thin block). A vertex near a convex (or straight) corner
+       * of a boundary may project into both edges there; it then touches
+       * one of them: the remembered one, else the one it is farther
+       * outside of.
+       */
+      std::vector<VertexEdge>
+      touched_edges(const std::vector<Point<2>>           &vertices,
+                    std::vector<Candidate>::const_iterator first,
+                    std::vector<Candidate>::const_iterator last) const;
+
+      /** Add a vertex-edge contact for each of @p vertex_edge. */
+      void
+      add_vertex_edge_contacts(const std::vector<Point<2>>   &vertices,
+                               const std::vector<VertexEdge> &vertex_edge);
+
+      /**
+       * Does @p vertex have a vertex-edge contact, among the sorted
+       * @p vertex_edge, on an edge at @p corner?
+       */
+      bool
+      has_vertex_edge_at(const std::vector<VertexEdge> &vertex_edge,
+                         const unsigned int             vertex,
+                         const unsigned int             corner) const;
+
+      /**
+       * The vertex pairs (smaller index first) of the vertex_vertex
+       * candidates: a vertex and the end point of the edge closest to it,
+       * unless the vertex belongs to the edge's cell or already touches an
+       * edge at that end point (the vertex-edge contact holds the pair).
+       */
+      std::set<std::pair<unsigned int, unsigned int>>
+      vertex_vertex_pairs(const std::vector<Candidate>  &candidates,
+                          const std::vector<VertexEdge> &vertex_edge) const;
+
+      /**
+       * Add the contacts of the vertex pairs of vertex_vertex_pairs():
+       * two edge-edge contacts where faces at the two vertices overlap,
+       * else a vertex-vertex contact.
        */
       void
-      add_springs(const Option                 &o,
-                  const ContactState           &contact,
-                  const double                  scale,
-                  dealii::SparseMatrix<double> *matrix,
-                  dealii::Vector<double>       &rhs) const;
+      add_vertex_vertex_contacts(const std::vector<Point<2>>   &vertices,
+                                 const std::vector<Candidate>  &candidates,
+                                 const std::vector<VertexEdge> &vertex_edge);
+
+      /**
+       * Edge-edge: an edge @p face_e at @p b and an edge @p face_f at @p a
+       * that leave the pair in the same direction and overlap. Nothing is
+       * indeterminate then: a touches face_e and b touches face_f, each at
+       * the end point of the edge, two vertex-edge contacts. Both are kept,
+       * so that when the corners move apart the one whose vertex slides
+       * onto the other's edge goes on with its state, and no contact
+       * appears already compressed.
+       */
+      void
+      add_edge_edge_contacts(const std::vector<Point<2>>   &vertices,
+                             const std::vector<VertexEdge> &vertex_edge,
+                             const unsigned int             a,
+                             const unsigned int             b,
+                             const unsigned int             face_e,
+                             const unsigned int             face_f);
+
+      /**
+       * A vertex-vertex contact of @p a and @p b with the facing edges at
+       * either vertex as its options (thesis chapter 6), unless it is new
+       * and one vertex starts deep inside the other's corner (the two lie
+       * on opposite sides of a thin body).
+       */
+      void
+      add_vertex_vertex_contact(const std::vector<Point<2>> &vertices,
+                                const unsigned int           a,
+                                const unsigned int           b);
+      /** @} */
+
+      /**
+       * @name Transfer (source/contact/transfer.cc): what a contact carries
+       * from the last step.
+       */
+      /** @{ */
 
       /** Carry the memory of the last step over to contact @p c. */
       void
       transfer(Contact &c, const std::vector<Point<2>> &vertices) const;
+
+      /**
+       * The state, option and anchor of the last step's end for contact
+       * @p c, from its own memory or (vertex-edge) from the memory of its
+       * vertex on a neighbouring edge it has slid over from.
+       */
+      void
+      recall(Contact &c, const std::vector<Point<2>> &vertices) const;
 
       /**
        * A neighbouring edge of @p edge, across a (nearly) straight vertex,
@@ -316,11 +442,31 @@ namespace ndda
       straight_neighbour_in_memory(const std::vector<Point<2>> &vertices,
                                    const unsigned int           vertex,
                                    const unsigned int           edge) const;
+      /** @} */
 
-      /** Update the scale of a contact that closes or opens within the
-       * step; true if it changed noticeably. */
+      /**
+       * @name Bonded joints (source/contact/bonded_joints.cc): the
+       * geometry of the joints that the contact law bonds.
+       */
+      /** @{ */
+
+      /**
+       * The mean boundary edge length of every block on the @p vertices,
+       * into block_edge_length (on the first step's geometry: it decides
+       * which side ties a bonded joint).
+       */
+      void
+      measure_block_edges(const std::vector<Point<2>> &vertices);
+
+      /**
+       * Is a contact of @p vertex on @p edge the side a bonded joint is
+       * tied from: the vertex's block has the finer boundary (shorter mean
+       * boundary edge; the smaller block index if equal; within one block,
+       * the smaller vertex index)? The finer side has more contacts to
+       * share the joint's forces.
+       */
       bool
-      update_scale(Contact &c, const dealii::Vector<double> &d);
+      bonding_side(const unsigned int vertex, const unsigned int edge) const;
 
       /**
        * The length of joint a bonded vertex-edge contact of @p vertex on
@@ -338,14 +484,36 @@ namespace ndda
                   const unsigned int           edge) const;
 
       /**
-       * Is a contact of @p vertex on @p edge the side a bonded joint is
-       * tied from: the vertex's block has the finer boundary (shorter mean
-       * boundary edge; the smaller block index if equal; within one block,
-       * the smaller vertex index)? The finer side has more contacts to
-       * share the joint's forces.
+       * A bonded joint is tied from one side: the contacts from the other
+       * side on an edge whose end vertex is bonded to the contact vertex's
+       * block are shadowed, and stay open.
+       */
+      void
+      shadow_bonded_joints();
+      /** @} */
+
+      /**
+       * @name Vertex-vertex resolution (source/contact/vertex_vertex.cc),
+       * thesis chapter 6.
+       */
+      /** @{ */
+
+      /**
+       * Resolve an unresolved vertex-vertex pair @p c after the solution
+       * @p d: choose its reference edge once a vertex has entered the
+       * other's corner, or put it on the temporary vertex spring. Returns
+       * true if it changed.
        */
       bool
-      bonding_side(const unsigned int vertex, const unsigned int edge) const;
+      resolve_pair(Contact &c, const dealii::Vector<double> &d);
+
+      /**
+       * The options of pair @p c whose vertex has entered the other's
+       * corner under @p d: it ends behind the lines of both edges there,
+       * within their lengths.
+       */
+      std::vector<unsigned int>
+      entered_options(const Contact &c, const dealii::Vector<double> &d) const;
 
       /** Choose the entrance edge of a penetrating vertex-vertex pair among
        * the options @p inside of the vertices that entered; invalid for
@@ -359,6 +527,46 @@ namespace ndda
        * invalid if the motion is symmetric. */
       unsigned int
       sliding_option(const Contact &c, const dealii::Vector<double> &d) const;
+      /** @} */
+
+      /**
+       * Add the springs of the contact law for a contact in state
+       * @p contact on option @p o, all stiffnesses times @p scale: their
+       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
+       * stiffness to @p matrix.
+       */
+      void
+      add_springs(const Option                 &o,
+                  const ContactState           &contact,
+                  const double                  scale,
+                  dealii::SparseMatrix<double> *matrix,
+                  dealii::Vector<double>       &rhs) const;
+
+      /**
+       * Classify a resolved contact @p c from the solution @p d: its bond,
+       * else the contact law; returns true if its state changed.
+       */
+      bool
+      update_state(Contact &c, const dealii::Vector<double> &d);
+
+      /** Update the scale of a contact that closes or opens within the
+       * step; true if it changed noticeably. */
+      bool
+      update_scale(Contact &c, const dealii::Vector<double> &d);
+
+      /**
+       * end_step() for a temporary vertex spring: its memory, energy and
+       * force at the step's end.
+       */
+      void
+      end_vertex_spring(const Contact &c, const dealii::Vector<double> &d);
+
+      /**
+       * end_step() for a closed contact: its memory, energy, force at the
+       * step's end and statistics.
+       */
+      void
+      end_closed_contact(const Contact &c, const dealii::Vector<double> &d);
 
       ContactSettings                        settings;
       DofAccess                              dofs;
