@@ -32,7 +32,6 @@
 #include <ndda/contact/contact_law.h>
 
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 
 #include "tests.h"
@@ -40,6 +39,7 @@
 using namespace dealii;
 using namespace ndda::contact;
 using ndda_tests::check;
+using ndda_tests::check_value;
 
 /** A law defined by this program: no springs at all. */
 class NoContact : public ContactLaw
@@ -97,22 +97,6 @@ NDDA_REGISTER_CONTACT_LAW(NoContact,
 
 namespace
 {
-  const double tolerance = 1e-12;
-
-  /** Print a measured value and check it against the expected one. */
-  void
-  check_value(const std::string &what,
-              const double       measured,
-              const double       expected,
-              const double       scale = 1.)
-  {
-    std::cout << "  " << what << " = " << std::setprecision(12) << measured
-              << " (expected " << expected << ")" << std::endl;
-    check(std::abs(measured - expected) <=
-            tolerance * std::max(std::abs(expected), scale),
-          what);
-  }
-
   /** Print a state and check it against the expected one. */
   void
   check_state(const std::string &what,
@@ -218,7 +202,7 @@ namespace
     double sum_x = 0, sum_y = 0;
     for (unsigned int i = 0; i < 8; i += 2)
       sum_x += f[i], sum_y += f[i + 1];
-    check(std::abs(sum_x) < tolerance && std::abs(sum_y) < tolerance,
+    check(std::abs(sum_x) < 1e-12 && std::abs(sum_y) < 1e-12,
           "the forces are in balance");
     std::cout << "  the forces on P and on the triangle are in balance"
               << std::endl;
