@@ -142,7 +142,8 @@ namespace ndda
      */
     struct ContactState
     {
-      /// open, locked or sliding (never vertex_spring).
+      /// open, locked or sliding for a law (vertex_spring only for the
+      /// handler's unresolved vertex-vertex pairs, which no law sees).
       State state = State::open;
       /// Anchor of the shear spring, as a ratio along the option's edge
       /// line (outside [0, 1] for a vertex beyond the edge's end).
@@ -167,7 +168,7 @@ namespace ndda
       /** The trial of option @p o under the increment @p d. */
       Trial(const Option &o, const dealii::Vector<double> &d);
 
-      /** A trial given by its two numbers (for tests). */
+      /** A trial given by its two numbers. */
       Trial(const double gap, const double increment);
 
       /// Normal gap g(d) at the end of the step (m, negative: penetration).
@@ -207,7 +208,8 @@ namespace ndda
      * subsection, named after the law, inside `subsection Contact`), an
      * override of parse_parameters() that reads them, and one line
      * NDDA_REGISTER_CONTACT_LAW(Class, "name", "description") at the end of
-     * its `.cc` file.
+     * its `.cc` file. ContactSettings::law selects the law of a scene; the
+     * scene file cannot name one yet (doc/contact.md, "Contact laws").
      *
      * @ingroup contact
      */
