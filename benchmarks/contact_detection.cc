@@ -87,7 +87,7 @@ main(int argc, char **argv)
       const auto mesh = square_grid(m, gap);
 
       auto         start         = std::chrono::steady_clock::now();
-      const auto   edges         = contact::boundary_edges(mesh);
+      const auto   edges         = boundary_edges(mesh);
       const double boundary_time = seconds_since(start);
 
       const unsigned int              repeats = (target < 1e6 ? 3 : 1);

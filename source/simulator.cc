@@ -364,7 +364,7 @@ namespace ndda
 
     // The friction coefficient of each boundary edge's side: its
     // material's joint friction angle, or the scene's joint angle.
-    const auto edges = contact::boundary_edges(mesh.get_block_mesh());
+    const auto edges = boundary_edges(mesh.get_block_mesh());
     // The edges index the triangles of the block mesh, which are the
     // active cells of the triangulation, vertex order kept.
     {

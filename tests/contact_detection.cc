@@ -52,9 +52,7 @@ namespace
   std::vector<Candidate>
   detect(const geometry::BlockMesh &mesh, const double threshold)
   {
-    return contact::detect(mesh.vertices,
-                           contact::boundary_edges(mesh),
-                           threshold);
+    return contact::detect(mesh.vertices, boundary_edges(mesh), threshold);
   }
 
 
@@ -68,8 +66,8 @@ namespace
 
 
   void
-  print(const std::vector<Candidate>             &candidates,
-        const std::vector<contact::BoundaryEdge> &edges)
+  print(const std::vector<Candidate>    &candidates,
+        const std::vector<BoundaryEdge> &edges)
   {
     for (const Candidate &c : candidates)
       std::cout << "    vertex " << c.vertex << " edge " << c.edge << " ("
@@ -95,7 +93,7 @@ namespace
       geometry::BlockMesh mesh;
       add_square(mesh, 0., 0.);
       add_square(mesh, 1. + gap, 0.);
-      const auto edges = contact::boundary_edges(mesh);
+      const auto edges = boundary_edges(mesh);
       check(edges.size() == 8, "two squares have 8 boundary edges");
       const auto candidates = detect(mesh, 0.02);
       std::cout << "  aligned, threshold 0.02: " << candidates.size()
@@ -137,7 +135,7 @@ namespace
       geometry::BlockMesh mesh;
       add_square(mesh, 0., 0.);
       add_square(mesh, 1. + gap, 0.5);
-      const auto edges      = contact::boundary_edges(mesh);
+      const auto edges      = boundary_edges(mesh);
       const auto candidates = detect(mesh, 0.02);
       std::cout << "  shifted by 0.5, threshold 0.02: " << candidates.size()
                 << " candidates, "
@@ -186,7 +184,7 @@ namespace
     geometry::BlockMesh mesh;
     add_square(mesh, 0., 0.);
     add_square(mesh, 1. + d, 1. + d);
-    const auto edges      = contact::boundary_edges(mesh);
+    const auto edges      = boundary_edges(mesh);
     const auto candidates = detect(mesh, 0.02);
     std::cout << "  threshold 0.02: " << candidates.size() << " candidates, "
               << count(candidates, CandidateType::vertex_vertex)
@@ -228,7 +226,7 @@ namespace
 
     const double threshold = 0.4;
     {
-      const auto edges      = contact::boundary_edges(mesh);
+      const auto edges      = boundary_edges(mesh);
       const auto candidates = detect(mesh, threshold);
       std::cout << "  before splitting: " << edges.size() << " boundary edges, "
                 << candidates.size() << " candidates" << std::endl;
@@ -239,7 +237,7 @@ namespace
     // Crack along y = 1 from (0,1) to the tip (2,1).
     const auto origin =
       geometry::split_vertices_along_edges(mesh, {{{5, 6}}, {{6, 7}}});
-    const auto edges      = contact::boundary_edges(mesh);
+    const auto edges      = boundary_edges(mesh);
     const auto candidates = detect(mesh, threshold);
     std::cout << "  after splitting: " << mesh.vertices.size() << " vertices, "
               << edges.size() << " boundary edges, " << candidates.size()
@@ -299,7 +297,7 @@ namespace
     block.mesh_size = 0.5;
     scene.blocks.push_back(block);
     const auto mesh  = geometry::mesh_scene(scene);
-    const auto edges = contact::boundary_edges(mesh);
+    const auto edges = boundary_edges(mesh);
 
     const double threshold  = 0.05;
     const auto   candidates = detect(mesh, threshold);
@@ -349,9 +347,9 @@ namespace
 
   /** detect() by an O(n^2) loop over all pairs of edges. */
   std::vector<Candidate>
-  brute_force(const std::vector<Point<2>>              &vertices,
-              const std::vector<contact::BoundaryEdge> &edges,
-              const double                              threshold)
+  brute_force(const std::vector<Point<2>>     &vertices,
+              const std::vector<BoundaryEdge> &edges,
+              const double                     threshold)
   {
     std::vector<Candidate> result;
     Candidate              c;
@@ -412,7 +410,7 @@ namespace
         mesh.cell_material.insert(mesh.cell_material.end(), corners - 2, 0);
         mesh.block_names.push_back("b" + std::to_string(b));
       }
-    const auto edges = contact::boundary_edges(mesh);
+    const auto edges = boundary_edges(mesh);
     check(edges.size() == 100 * 3 + 100 * 4, "random: 700 boundary edges");
     for (const double threshold : {0., 0.005, 0.02, 0.1})
       {

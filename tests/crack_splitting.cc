@@ -46,7 +46,7 @@
 
 #include <deal.II/numerics/vector_tools_interpolate.h>
 
-#include <ndda/contact/contact_detection.h>
+#include <ndda/mesh/boundary_edges.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/mesh/state_transfer.h>
 #include <ndda/mesh/topology.h>
@@ -210,7 +210,7 @@ namespace
   checked_loops(const CrackableMesh &mesh, const std::string &name)
   {
     const auto &m     = mesh.get_block_mesh();
-    const auto  edges = contact::boundary_edges(m);
+    const auto  edges = boundary_edges(m);
     const auto  loops = topology::boundary_loops(m, edges);
 
     std::vector<unsigned int> n_in_loop(edges.size(), 0);
@@ -267,11 +267,10 @@ namespace
       const std::vector<std::array<unsigned int, 2>> &edges,
       const Expected                                 &expected)
   {
-    const geometry::BlockMesh before = mesh.get_block_mesh();
-    const double              area   = mesh.area();
-    const unsigned int        n_boundary_before =
-      contact::boundary_edges(before).size();
-    const unsigned int n_faces_before =
+    const geometry::BlockMesh before            = mesh.get_block_mesh();
+    const double              area              = mesh.area();
+    const unsigned int        n_boundary_before = boundary_edges(before).size();
+    const unsigned int        n_faces_before =
       n_deal_boundary_faces(mesh.get_triangulation());
     std::vector<Tensor<1, 2>> u_before;
     for (const auto &x : before.vertices)
@@ -338,7 +337,7 @@ namespace
     // Cracked edges: both faces lie on the old edge, with their cell on the
     // left, and are crack faces. Faces that came apart are boundary edges;
     // faces that share both vertices (both tips inside) are not yet.
-    const auto boundary = contact::boundary_edges(after);
+    const auto boundary = boundary_edges(after);
     std::map<std::array<unsigned int, 2>, unsigned int> cell_of_edge;
     for (const auto &e : boundary)
       cell_of_edge[{{e.v0, e.v1}}] = e.cell;

@@ -26,7 +26,6 @@
 #include <ndda/fracture/mohr_coulomb.h>
 
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <tuple>
 
@@ -35,6 +34,7 @@
 using namespace dealii;
 using namespace ndda::fracture;
 using ndda_tests::check;
+using ndda_tests::check_value;
 
 /** A criterion defined by this program: never lets an edge fail. */
 class NeverFails : public FractureCriterion
@@ -63,22 +63,6 @@ NDDA_REGISTER_FRACTURE_CRITERION(NeverFails,
 
 namespace
 {
-  const double tolerance = 1e-12;
-
-  /** Print a measured value and check it against the expected one. */
-  void
-  check_value(const std::string &what,
-              const double       measured,
-              const double       expected,
-              const double       scale = 1.)
-  {
-    std::cout << "  " << what << " = " << std::setprecision(15) << measured
-              << " (expected " << expected << ")" << std::endl;
-    check(std::abs(measured - expected) <=
-            tolerance * std::max(std::abs(expected), scale),
-          what);
-  }
-
   /** Check two tensors component by component. */
   void
   check_tensor(const std::string           &what,

@@ -12,8 +12,10 @@
 #include <ndda/parameters/parameters.h>
 #include <ndda/simulator.h>
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -80,6 +82,24 @@ namespace ndda_tests
         std::cout << "FAILED: " << what << std::endl;
         std::exit(1);
       }
+  }
+
+  /**
+   * Print a measured value beside the expected one and fail the test if
+   * they differ by more than 1e-12 relative to the larger of |expected| and
+   * @p scale.
+   */
+  inline void
+  check_value(const std::string &what,
+              const double       measured,
+              const double       expected,
+              const double       scale = 1.)
+  {
+    std::cout << "  " << what << " = " << std::setprecision(15) << measured
+              << " (expected " << expected << ")" << std::endl;
+    check(std::abs(measured - expected) <=
+            1e-12 * std::max(std::abs(expected), scale),
+          what);
   }
 
 #ifdef NDDA_TEST_DIR

@@ -107,8 +107,8 @@ namespace ndda
 
 
     std::vector<BoundaryLoop>
-    boundary_loops(const geometry::BlockMesh                &mesh,
-                   const std::vector<contact::BoundaryEdge> &edges)
+    boundary_loops(const geometry::BlockMesh       &mesh,
+                   const std::vector<BoundaryEdge> &edges)
     {
       const HalfEdges half_edges(mesh.triangles, mesh.vertices.size());
 
@@ -125,7 +125,7 @@ namespace ndda
                       dealii::ExcMessage(
                         "boundary_loops: edge " + std::to_string(e) +
                         " is not a boundary edge of the mesh; pass the "
-                        "edges of contact::boundary_edges(mesh)."));
+                        "edges of boundary_edges(mesh)."));
           edge_of_side[side] = e;
         }
 

@@ -4,7 +4,7 @@
 
 #include <deal.II/base/point.h>
 
-#include <ndda/geometry/block_mesh.h>
+#include <ndda/mesh/boundary_edges.h>
 
 #include <vector>
 
@@ -12,12 +12,11 @@ namespace ndda
 {
   /**
    * Contact between blocks (and between the faces of a crack or a notch of
-   * one block): detection first. This is the first slice of the contact
-   * layer: it finds the vertex-edge and vertex-vertex candidates of one time
-   * step as plain data. The contact kernels (normal and shear springs,
-   * friction), the contact state carried from step to step, the
-   * vertex-vertex resolution of chapter 6 of the thesis, and the open-close
-   * iteration come next and build on these candidates.
+   * one block): detection. It finds the vertex-edge and vertex-vertex
+   * candidates of one time step as plain data, between the boundary edges
+   * of the mesh (ndda::boundary_edges(), mesh/boundary_edges.h).
+   * ContactHandler turns the candidates into contacts; the contact law
+   * (ContactLaw) gives them their springs.
    *
    * Detection has two phases:
    * - broad phase: one axis-aligned box per boundary edge, grown by the
@@ -38,28 +37,6 @@ namespace ndda
   namespace contact
   {
     using dealii::Point;
-
-    /**
-     * A boundary edge of the mesh: an edge used by exactly one triangle,
-     * oriented as in that triangle, so that going from v0 to v1 the body
-     * lies on the left (counter-clockwise around the block's outer boundary,
-     * clockwise around holes, and the two faces of a crack run in opposite
-     * directions).
-     */
-    struct BoundaryEdge
-    {
-      /// First vertex (index into the mesh's vertices).
-      unsigned int v0;
-      /// Second vertex.
-      unsigned int v1;
-      /// Block of the triangle the edge belongs to.
-      unsigned int block;
-      /// The triangle (its index in the mesh, which is the active cell
-      /// index of the Triangulation built from it).
-      unsigned int cell = static_cast<unsigned int>(-1);
-      /// Local index of v0 in that triangle; v1 is (local_vertex + 1) % 3.
-      unsigned int local_vertex = 0;
-    };
 
     /**
      * Kind of a contact candidate.
@@ -101,18 +78,6 @@ namespace ndda
     constexpr double vertex_vertex_tolerance = 1e-9;
 
     /**
-     * The boundary edges of @p mesh: every edge used by exactly one
-     * triangle, oriented as in that triangle, with that triangle's block.
-     * The order is deterministic: sorted by (v0, v1). Cost O(n log n) in
-     * the number of triangles.
-     *
-     * Throws dealii::ExcMessage if an edge is used by more than two
-     * triangles.
-     */
-    std::vector<BoundaryEdge>
-    boundary_edges(const geometry::BlockMesh &mesh);
-
-    /**
      * Narrow-phase test of one vertex against one boundary edge.
      *
      * Computes the closest point of the segment edges[edge] to
@@ -145,7 +110,7 @@ namespace ndda
      * when every edge has a bounded number of neighbours within reach.
      *
      * @param vertices Vertex positions.
-     * @param edges Boundary edges, for example from boundary_edges().
+     * @param edges Boundary edges, for example from ndda::boundary_edges().
      * @param threshold Detection distance (m), non-negative.
      */
     std::vector<Candidate>

@@ -12,7 +12,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/contact/contact_detection.h>
-#include <ndda/parameters/parameters.h>
+#include <ndda/contact/contact_law.h>
+#include <ndda/mesh/boundary_edges.h>
 
 #include <array>
 #include <map>
@@ -25,58 +26,6 @@ namespace ndda
 {
   namespace contact
   {
-    using dealii::Tensor;
-    using dealii::types::global_dof_index;
-
-    /**
-     * State of one contact in the open-close iteration (thesis 2.3.13,
-     * 3.10).
-     */
-    enum class State : unsigned char
-    {
-      /// No spring.
-      open,
-      /// Normal spring and shear spring: the vertex sticks to its anchor
-      /// point on the edge.
-      locked,
-      /// Normal spring and Coulomb friction along the edge.
-      sliding,
-      /// A vertex-vertex pair whose reference edge is not chosen yet, held
-      /// by a temporary spring between the two vertices (thesis 6.2).
-      vertex_spring
-    };
-
-    /** Material data and stiffnesses the contacts need. */
-    struct ContactSettings
-    {
-      /// Normal spring stiffness (N/m).
-      double normal_stiffness = 0;
-      /// Shear spring stiffness over normal spring stiffness.
-      double shear_ratio = 0.4;
-      /// Vertex-vertex resolution.
-      parameters::VertexVertexMethod vertex_vertex_method =
-        parameters::VertexVertexMethod::revised;
-      /// Hysteresis of the open-close criteria (m): a closed contact opens
-      /// when its gap exceeds this, an open one closes when it penetrates
-      /// deeper than this, and a sliding one locks when it moves back by
-      /// more than this.
-      double state_tolerance = 0;
-      /// A vertex-edge candidate that starts deeper than this inside the
-      /// other body, with no contact remembered from the last step, is not
-      /// a contact (the far face of a block thinner than the detection
-      /// distance, m).
-      double ignore_depth = 0;
-      /// The integrator averages start and end forces (Newmark); only used
-      /// for the friction work in the statistics.
-      bool average_start_and_end = false;
-      /// Joint strength per metre of contact length (N/m): tensile
-      /// strength and cohesion of the joint material times the thickness.
-      /// Contacts that touch at the start of the run are bonded with it
-      /// until they break (see doc/contact.md, "Bonded joints").
-      double bond_tension  = 0;
-      double bond_cohesion = 0;
-    };
-
     /**
      * What the contacts need to know of the finite element space: the dofs
      * of every cell (cell after cell), the vector component of each local
@@ -145,6 +94,13 @@ namespace ndda
      * the edge's nodes; doc/contact.md derives the kernels and compares
      * them with thesis 3.76-3.104.
      *
+     * The handler owns the geometry: detection, the narrow phase, the
+     * vertex-vertex resolution of chapter 6, the memory carried from step
+     * to step, and the geometry of bonded joints. What a contact does once
+     * it has an edge — its springs, its state after a solve, its bond and
+     * its energy — is the contact law's (ContactLaw, ContactSettings::law;
+     * "penalty Coulomb" unless the settings name another).
+     *
      * @ingroup contact
      */
     class ContactHandler
@@ -153,7 +109,8 @@ namespace ndda
       /**
        * Set up for a mesh: its boundary edges, the friction coefficient of
        * each edge's side (tan of the joint friction angle of the edge's
-       * material) and the dofs.
+       * material) and the dofs. If @p settings has no contact law, the
+       * handler uses "penalty Coulomb" (default_contact_law).
        */
       void
       initialize(const std::vector<BoundaryEdge> &edges,
@@ -271,34 +228,11 @@ namespace ndda
 
     private:
       /**
-       * A vertex against the line of an edge, with its linearised gap
-       * operators, on the geometry of the step's start.
+       * A contact: a vertex-edge pair or a vertex-vertex pair. Its present
+       * state, anchor, sliding direction, friction and bond length are the
+       * ContactState the contact law sees.
        */
-      struct Option
-      {
-        unsigned int vertex;
-        unsigned int edge;
-        /// Outward unit normal and unit tangent (v0 -> v1) of the edge.
-        Tensor<1, 2> normal, tangent;
-        double       length;
-        /// Projection ratio of the vertex on the edge, not clamped.
-        double ratio;
-        /// Signed distance of the vertex to the edge's line (positive
-        /// outside).
-        double gap;
-        /// Dofs of the vertex, then of the edge's cell.
-        std::vector<global_dof_index> dofs;
-        /// Gap operators e_n and e_t on those dofs.
-        std::vector<double> wn, wt;
-
-        double
-        normal_gap(const dealii::Vector<double> &d) const;
-        double
-        tangential_increment(const dealii::Vector<double> &d) const;
-      };
-
-      /** A contact: a vertex-edge pair or a vertex-vertex pair. */
-      struct Contact
+      struct Contact : ContactState
       {
         /// Potential (vertex, edge) pairs: one for a vertex-edge contact,
         /// the edges at either vertex for a vertex-vertex pair.
@@ -308,19 +242,10 @@ namespace ndda
         unsigned int chosen = invalid;
         /// The two vertices of a vertex-vertex pair.
         unsigned int vertex_a = invalid, vertex_b = invalid;
-        State        state = State::open;
-        /// Shear spring anchor, as a ratio along the chosen edge's line
-        /// (outside [0, 1] for a vertex beyond the edge's end).
-        double anchor = 0;
-        /// Sliding direction along the edge's tangent (+1, -1; 0 without
-        /// friction).
-        int    sign     = 0;
-        double friction = 0;
 
-        State        start_state  = State::open;
+        /// The state at the step's start, and its chosen option.
+        ContactState start;
         unsigned int start_chosen = invalid;
-        double       start_anchor = 0;
-        int          start_sign   = 0;
         /// Changes between open and closed in this step's iteration.
         unsigned int flips = 0;
         /// Newmark: the fraction of the step's end force (closing) or start
@@ -339,8 +264,6 @@ namespace ndda
         /// is tied from one side only (doc/contact.md, "Bonded joints"),
         /// this contact stays open until the bonds next to it break.
         bool shadowed = false;
-        /// Length of joint the contact stands for (m), see bond_length().
-        double bond_length = 0;
       };
 
       /** What is carried from one step to the next, per contact key. */
@@ -353,12 +276,10 @@ namespace ndda
         bool   bonded;
       };
 
-      static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
+      /** A (vertex, boundary edge) pair. */
+      using VertexEdge = std::pair<unsigned int, unsigned int>;
 
-      Option
-      make_option(const std::vector<Point<2>> &vertices,
-                  const unsigned int           vertex,
-                  const unsigned int           edge) const;
+      static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
       /** Key of a (vertex, edge) pair that survives renumbered edges. */
       std::tuple<unsigned int, unsigned int, unsigned int>
@@ -368,23 +289,149 @@ namespace ndda
       }
 
       /**
-       * Add the springs of a contact in @p state on option @p o, all
-       * stiffnesses times @p scale: their forces at d = 0 to @p rhs and,
-       * unless @p matrix is null, their stiffness to @p matrix.
+       * @name Narrow phase (source/contact/narrow_phase.cc): from the
+       * candidates of detect() to the contacts of a step.
+       */
+      /** @{ */
+
+      /** The option of @p vertex against @p edge on the @p vertices. */
+      Option
+      make_option(const std::vector<Point<2>> &vertices,
+                  const unsigned int           vertex,
+                  const unsigned int           edge) const;
+
+      /**
+       * Is @p vertex one of the nodes of the cell of @p edge (the third
+       * vertex of a thin triangle, or a mesh neighbour)?
+       */
+      bool
+      in_cell(const unsigned int vertex, const unsigned int edge) const;
+
+      /**
+       * Can @p vertex touch @p edge: do the outward normal at the vertex
+       * (the mean of its edges' normals) and the edge's normal point
+       * against each other? This rules out the other vertices of the same
+       * straight side, every vertex of a convex block against its own
+       * edges, and the far face of a thin block.
+       */
+      bool
+      facing(const std::vector<Point<2>> &vertices,
+             const unsigned int           vertex,
+             const unsigned int           edge) const;
+
+      /**
+       * Is there a state to carry over to @p vertex on @p edge (see
+       * transfer()): the pair's own, or that of the vertex on a
+       * neighbouring edge across a straight vertex?
+       */
+      bool
+      remembered(const std::vector<Point<2>> &vertices,
+                 const unsigned int           vertex,
+                 const unsigned int           edge) const;
+
+      /**
+       * The vertex-edge contacts of a step, sorted by vertex, then edge:
+       * the vertex_edge candidates of each vertex that can touch their
+       * edge, one of two at a convex corner (see touched_edges()).
+       */
+      std::vector<VertexEdge>
+      vertex_edge_pairs(const std::vector<Point<2>>  &vertices,
+                        const std::vector<Candidate> &candidates) const;
+
+      /**
+       * Of the vertex_edge candidates of one vertex, [@p first, @p last),
+       * those that can be contacts: not on an edge of the vertex's own
+       * cell, facing, and not new and deep inside the other body (the far
+       * face of a thin block). A vertex near a convex (or straight) corner
+       * of a boundary may project into both edges there; it then touches
+       * one of them: the remembered one, else the one it is farther
+       * outside of.
+       */
+      std::vector<VertexEdge>
+      touched_edges(const std::vector<Point<2>>           &vertices,
+                    std::vector<Candidate>::const_iterator first,
+                    std::vector<Candidate>::const_iterator last) const;
+
+      /** Add a vertex-edge contact for each of @p vertex_edge. */
+      void
+      add_vertex_edge_contacts(const std::vector<Point<2>>   &vertices,
+                               const std::vector<VertexEdge> &vertex_edge);
+
+      /**
+       * Does @p vertex have a vertex-edge contact, among the sorted
+       * @p vertex_edge, on an edge at @p corner?
+       */
+      bool
+      has_vertex_edge_at(const std::vector<VertexEdge> &vertex_edge,
+                         const unsigned int             vertex,
+                         const unsigned int             corner) const;
+
+      /**
+       * The vertex pairs (smaller index first) of the vertex_vertex
+       * candidates: a vertex and the end point of the edge closest to it,
+       * unless the vertex belongs to the edge's cell or already touches an
+       * edge at that end point (the vertex-edge contact holds the pair).
+       */
+      std::set<std::pair<unsigned int, unsigned int>>
+      vertex_vertex_pairs(const std::vector<Candidate>  &candidates,
+                          const std::vector<VertexEdge> &vertex_edge) const;
+
+      /**
+       * Add the contacts of the vertex pairs of vertex_vertex_pairs():
+       * two edge-edge contacts where faces at the two vertices overlap,
+       * else a vertex-vertex contact.
        */
       void
-      add_springs(const Option                 &o,
-                  const State                   state,
-                  const double                  anchor,
-                  const int                     sign,
-                  const double                  friction,
-                  const double                  scale,
-                  dealii::SparseMatrix<double> *matrix,
-                  dealii::Vector<double>       &rhs) const;
+      add_vertex_vertex_contacts(const std::vector<Point<2>>   &vertices,
+                                 const std::vector<Candidate>  &candidates,
+                                 const std::vector<VertexEdge> &vertex_edge);
+
+      /**
+       * Edge-edge: an edge @p face_e at @p b and an edge @p face_f at @p a
+       * that leave the pair in the same direction and overlap. Nothing is
+       * indeterminate then: a touches face_e and b touches face_f, each at
+       * the end point of the edge, two vertex-edge contacts. Both are kept,
+       * so that when the corners move apart the one whose vertex slides
+       * onto the other's edge goes on with its state, and no contact
+       * appears already compressed.
+       */
+      void
+      add_edge_edge_contacts(const std::vector<Point<2>>   &vertices,
+                             const std::vector<VertexEdge> &vertex_edge,
+                             const unsigned int             a,
+                             const unsigned int             b,
+                             const unsigned int             face_e,
+                             const unsigned int             face_f);
+
+      /**
+       * A vertex-vertex contact of @p a and @p b with the facing edges at
+       * either vertex as its options (thesis chapter 6), unless it is new
+       * and one vertex starts deep inside the other's corner (the two lie
+       * on opposite sides of a thin body).
+       */
+      void
+      add_vertex_vertex_contact(const std::vector<Point<2>> &vertices,
+                                const unsigned int           a,
+                                const unsigned int           b);
+      /** @} */
+
+      /**
+       * @name Transfer (source/contact/transfer.cc): what a contact carries
+       * from the last step.
+       */
+      /** @{ */
 
       /** Carry the memory of the last step over to contact @p c. */
       void
       transfer(Contact &c, const std::vector<Point<2>> &vertices) const;
+
+      /**
+       * The state, option and anchor of the last step's end for contact
+       * @p c, from its own memory or (vertex-edge) from the memory of its
+       * vertex on a neighbouring edge it has slid over from.
+       */
+      void
+      recall(Contact &c, const std::vector<Point<2>> &vertices) const;
 
       /**
        * A neighbouring edge of @p edge, across a (nearly) straight vertex,
@@ -395,11 +442,31 @@ namespace ndda
       straight_neighbour_in_memory(const std::vector<Point<2>> &vertices,
                                    const unsigned int           vertex,
                                    const unsigned int           edge) const;
+      /** @} */
 
-      /** Update the scale of a contact that closes or opens within the
-       * step; true if it changed noticeably. */
+      /**
+       * @name Bonded joints (source/contact/bonded_joints.cc): the
+       * geometry of the joints that the contact law bonds.
+       */
+      /** @{ */
+
+      /**
+       * The mean boundary edge length of every block on the @p vertices,
+       * into block_edge_length (on the first step's geometry: it decides
+       * which side ties a bonded joint).
+       */
+      void
+      measure_block_edges(const std::vector<Point<2>> &vertices);
+
+      /**
+       * Is a contact of @p vertex on @p edge the side a bonded joint is
+       * tied from: the vertex's block has the finer boundary (shorter mean
+       * boundary edge; the smaller block index if equal; within one block,
+       * the smaller vertex index)? The finer side has more contacts to
+       * share the joint's forces.
+       */
       bool
-      update_scale(Contact &c, const dealii::Vector<double> &d);
+      bonding_side(const unsigned int vertex, const unsigned int edge) const;
 
       /**
        * The length of joint a bonded vertex-edge contact of @p vertex on
@@ -417,29 +484,36 @@ namespace ndda
                   const unsigned int           edge) const;
 
       /**
-       * Is a contact of @p vertex on @p edge the side a bonded joint is
-       * tied from: the vertex's block has the finer boundary (shorter mean
-       * boundary edge; the smaller block index if equal; within one block,
-       * the smaller vertex index)? The finer side has more contacts to
-       * share the joint's forces.
+       * A bonded joint is tied from one side: the contacts from the other
+       * side on an edge whose end vertex is bonded to the contact vertex's
+       * block are shadowed, and stay open.
        */
-      bool
-      bonding_side(const unsigned int vertex, const unsigned int edge) const;
+      void
+      shadow_bonded_joints();
+      /** @} */
 
       /**
-       * Does the bond of a bonded, locked contact hold under the solution
-       * @p d: the normal spring's tension below tensile strength times
-       * length, and the shear spring's force below the Mohr-Coulomb limit
-       * cohesion times length plus friction times normal force?
+       * @name Vertex-vertex resolution (source/contact/vertex_vertex.cc),
+       * thesis chapter 6.
+       */
+      /** @{ */
+
+      /**
+       * Resolve an unresolved vertex-vertex pair @p c after the solution
+       * @p d: choose its reference edge once a vertex has entered the
+       * other's corner, or put it on the temporary vertex spring. Returns
+       * true if it changed.
        */
       bool
-      bond_holds(const Contact &c, const dealii::Vector<double> &d) const;
+      resolve_pair(Contact &c, const dealii::Vector<double> &d);
 
-      /** Closed-state classification of a resolved contact. */
-      State
-      classify(const Contact                &c,
-               const dealii::Vector<double> &d,
-               int                          &sign) const;
+      /**
+       * The options of pair @p c whose vertex has entered the other's
+       * corner under @p d: it ends behind the lines of both edges there,
+       * within their lengths.
+       */
+      std::vector<unsigned int>
+      entered_options(const Contact &c, const dealii::Vector<double> &d) const;
 
       /** Choose the entrance edge of a penetrating vertex-vertex pair among
        * the options @p inside of the vertices that entered; invalid for
@@ -453,6 +527,46 @@ namespace ndda
        * invalid if the motion is symmetric. */
       unsigned int
       sliding_option(const Contact &c, const dealii::Vector<double> &d) const;
+      /** @} */
+
+      /**
+       * Add the springs of the contact law for a contact in state
+       * @p contact on option @p o, all stiffnesses times @p scale: their
+       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
+       * stiffness to @p matrix.
+       */
+      void
+      add_springs(const Option                 &o,
+                  const ContactState           &contact,
+                  const double                  scale,
+                  dealii::SparseMatrix<double> *matrix,
+                  dealii::Vector<double>       &rhs) const;
+
+      /**
+       * Classify a resolved contact @p c from the solution @p d: its bond,
+       * else the contact law; returns true if its state changed.
+       */
+      bool
+      update_state(Contact &c, const dealii::Vector<double> &d);
+
+      /** Update the scale of a contact that closes or opens within the
+       * step; true if it changed noticeably. */
+      bool
+      update_scale(Contact &c, const dealii::Vector<double> &d);
+
+      /**
+       * end_step() for a temporary vertex spring: its memory, energy and
+       * force at the step's end.
+       */
+      void
+      end_vertex_spring(const Contact &c, const dealii::Vector<double> &d);
+
+      /**
+       * end_step() for a closed contact: its memory, energy, force at the
+       * step's end and statistics.
+       */
+      void
+      end_closed_contact(const Contact &c, const dealii::Vector<double> &d);
 
       ContactSettings                        settings;
       DofAccess                              dofs;

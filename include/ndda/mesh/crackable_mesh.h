@@ -38,7 +38,7 @@ namespace ndda
     /// The side of cells[i] on the crack, as vertices of the new mesh in
     /// that cell's counter-clockwise order: faces[0] runs from the copy of
     /// old_vertices[0] to the copy of old_vertices[1], faces[1] the other
-    /// way. Each face runs with its cell on the left (contact::BoundaryEdge's
+    /// way. Each face runs with its cell on the left (BoundaryEdge's
     /// orientation). At a crack tip inside the block the two faces share the
     /// tip vertex; if both ends are such tips (thesis figure 5.4), the faces
     /// share both vertices and are not boundary edges yet (see
@@ -216,7 +216,7 @@ namespace ndda
      * crack of the scene (get_block_mesh().crack_edges). A crack whose two
      * tips lie inside the block keeps both vertices, so its edge is still
      * shared by two triangles and looks like an interior edge to everything
-     * that only sees triangles (deal.II's faces, contact::boundary_edges(),
+     * that only sees triangles (deal.II's faces, boundary_edges(),
      * fracture::find_interior_edges()); callers that pick edges to crack
      * must skip such edges. O(log n).
      */

@@ -2,8 +2,8 @@
 #ifndef ndda_mesh_topology_h
 #define ndda_mesh_topology_h
 
-#include <ndda/contact/contact_detection.h>
 #include <ndda/geometry/block_mesh.h>
+#include <ndda/mesh/boundary_edges.h>
 
 #include <array>
 #include <vector>
@@ -116,7 +116,7 @@ namespace ndda
 
     /**
      * A closed loop of boundary edges: the thesis's "loop" (section 5.3)
-     * as indices into the boundary edges of contact::boundary_edges().
+     * as indices into the boundary edges of ndda::boundary_edges().
      * Every edge runs with its block on the left, so the end of edge i is
      * the start of edge i+1, and the end of the last edge is the start of
      * the first.
@@ -144,11 +144,11 @@ namespace ndda
      * their lowest edge index and start with it. O(number of triangles).
      *
      * @param mesh The mesh.
-     * @param edges Its boundary edges, from contact::boundary_edges(mesh).
+     * @param edges Its boundary edges, from boundary_edges(mesh).
      */
     std::vector<BoundaryLoop>
-    boundary_loops(const geometry::BlockMesh                &mesh,
-                   const std::vector<contact::BoundaryEdge> &edges);
+    boundary_loops(const geometry::BlockMesh       &mesh,
+                   const std::vector<BoundaryEdge> &edges);
   } // namespace topology
 } // namespace ndda
 

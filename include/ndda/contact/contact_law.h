@@ -1,0 +1,410 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_contact_contact_law_h
+#define ndda_contact_contact_law_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ndda/parameters/parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ndda
+{
+  namespace contact
+  {
+    using dealii::ParameterHandler;
+    using dealii::Tensor;
+    using dealii::types::global_dof_index;
+
+    /**
+     * State of one contact in the open-close iteration (thesis 2.3.13,
+     * 3.10).
+     */
+    enum class State : unsigned char
+    {
+      /// No spring.
+      open,
+      /// Normal spring and shear spring: the vertex sticks to its anchor
+      /// point on the edge.
+      locked,
+      /// Normal spring and Coulomb friction along the edge.
+      sliding,
+      /// A vertex-vertex pair whose reference edge is not chosen yet, held
+      /// by a temporary spring between the two vertices (thesis 6.2). Not
+      /// a state of a contact law: the handler's vertex-vertex resolution
+      /// owns it.
+      vertex_spring
+    };
+
+    class ContactLaw;
+
+    /**
+     * Material data and stiffnesses the contacts of a scene need: the
+     * ContactHandler's settings, which it hands to the contact law with
+     * every call.
+     */
+    struct ContactSettings
+    {
+      /// Normal spring stiffness (N/m).
+      double normal_stiffness = 0;
+      /// Shear spring stiffness over normal spring stiffness.
+      double shear_ratio = 0.4;
+      /// Vertex-vertex resolution.
+      parameters::VertexVertexMethod vertex_vertex_method =
+        parameters::VertexVertexMethod::revised;
+      /// Hysteresis of the open-close criteria (m): a closed contact opens
+      /// when its gap exceeds this, an open one closes when it penetrates
+      /// deeper than this, and a sliding one locks when it moves back by
+      /// more than this.
+      double state_tolerance = 0;
+      /// A vertex-edge candidate that starts deeper than this inside the
+      /// other body, with no contact remembered from the last step, is not
+      /// a contact (the far face of a block thinner than the detection
+      /// distance, m).
+      double ignore_depth = 0;
+      /// The integrator averages start and end forces (Newmark); only used
+      /// for the friction work in the statistics.
+      bool average_start_and_end = false;
+      /// Joint strength per metre of contact length (N/m): tensile
+      /// strength and cohesion of the joint material times the thickness.
+      /// Contacts that touch at the start of the run are bonded with it
+      /// until they break (see doc/contact.md, "Bonded joints"), if the
+      /// contact law bonds joints.
+      double bond_tension  = 0;
+      double bond_cohesion = 0;
+      /// The contact law. Empty: ContactHandler::initialize() sets the
+      /// default law, "penalty Coulomb" with its default parameters.
+      std::shared_ptr<const ContactLaw> law;
+    };
+
+    /**
+     * One option of a contact: a vertex against the line of one boundary
+     * edge, with its linearised gap operators, on the geometry of the
+     * step's start. A vertex-edge contact has one option; a vertex-vertex
+     * pair has one per potential reference edge (thesis chapter 6).
+     *
+     * The normal gap is linearised in the step's increment d as
+     * g(d) = gap + e_n . d and the tangential motion as e_t . d; the
+     * entries of e_n and e_t on the option's dofs are @p wn and @p wt
+     * (doc/contact.md, "Kernels").
+     */
+    struct Option
+    {
+      /// The vertex (index into the mesh's vertices).
+      unsigned int vertex;
+      /// The edge (index into the boundary edges).
+      unsigned int edge;
+      /// Outward unit normal and unit tangent (v0 -> v1) of the edge.
+      Tensor<1, 2> normal, tangent;
+      /// Length of the edge (m).
+      double length;
+      /// Projection ratio of the vertex on the edge, not clamped.
+      double ratio;
+      /// Signed distance of the vertex to the edge's line (positive
+      /// outside), less the contact's offset once a contact has chosen
+      /// this option.
+      double gap;
+      /// Dofs of the vertex, then of the edge's cell.
+      std::vector<global_dof_index> dofs;
+      /// Gap operators e_n and e_t on those dofs.
+      std::vector<double> wn, wt;
+
+      /** The normal gap g(d) = gap + e_n . d after the increment @p d. */
+      double
+      normal_gap(const dealii::Vector<double> &d) const;
+
+      /** The tangential motion e_t . d of the vertex along the edge. */
+      double
+      tangential_increment(const dealii::Vector<double> &d) const;
+
+      /**
+       * The shear displacement (m) of the vertex from the anchor point at
+       * ratio @p anchor along the edge's line, after the tangential
+       * motion @p increment: s = (ratio - anchor) length + increment.
+       */
+      double
+      shear_displacement(const double anchor, const double increment) const
+      {
+        return (ratio - anchor) * length + increment;
+      }
+    };
+
+    /**
+     * What a contact law knows of a contact besides its option: the state
+     * of the open-close iteration and the data of the springs.
+     */
+    struct ContactState
+    {
+      /// open, locked or sliding for a law (vertex_spring only for the
+      /// handler's unresolved vertex-vertex pairs, which no law sees).
+      State state = State::open;
+      /// Anchor of the shear spring, as a ratio along the option's edge
+      /// line (outside [0, 1] for a vertex beyond the edge's end).
+      double anchor = 0;
+      /// Sliding direction along the edge's tangent (+1, -1; 0 without
+      /// friction or when not sliding).
+      int sign = 0;
+      /// Friction coefficient mu of the contact (tan of the smaller joint
+      /// friction angle of the two sides).
+      double friction = 0;
+      /// Length of joint a bonded contact stands for (m), see
+      /// doc/contact.md, "Bonded joints"; 0 for a contact without bond.
+      double bond_length = 0;
+    };
+
+    /**
+     * The motion of a contact in a trial solution d of the open-close
+     * iteration, on the option it is classified on.
+     */
+    struct Trial
+    {
+      /** The trial of option @p o under the increment @p d. */
+      Trial(const Option &o, const dealii::Vector<double> &d);
+
+      /** A trial given by its two numbers. */
+      Trial(const double gap, const double increment);
+
+      /// Normal gap g(d) at the end of the step (m, negative: penetration).
+      double gap;
+      /// Tangential motion e_t . d of the vertex along the edge in the step
+      /// (m).
+      double increment;
+    };
+
+    /**
+     * Interface of a contact law: what happens in a contact between a
+     * vertex and an edge once the handler has found it and chosen the edge
+     * (the narrow phase and the vertex-vertex resolution of thesis chapter
+     * 6 are geometry and stay in ContactHandler). A law decides
+     *
+     * - the springs of a contact in a given state: their stiffness and
+     *   their forces at d = 0 (add_springs());
+     * - the state of a contact after a trial solution of the open-close
+     *   iteration: open, locked or sliding with a direction (classify()),
+     *   and where a contact that locks anchors its shear spring
+     *   (anchor_on_locking());
+     * - whether contacts that touch when the run starts are bonded, and
+     *   whether a bond holds under a trial solution
+     *   (bonds_initial_contacts(), bond_holds(); the default is a law
+     *   without bonds);
+     * - the energy stored in a contact's springs (energy()).
+     *
+     * All functions are const: a law holds its parameters only, and one
+     * object may serve every contact of a scene. The scene-wide data (the
+     * penalty stiffness, which the automatic penalty changes during a run;
+     * the shear stiffness ratio; the state tolerance; the joint strength)
+     * come with every call in the ContactSettings.
+     *
+     * A law is a plugin in the style of ASPECT: a class derived from this
+     * one, with a static `declare_parameters(ParameterHandler &)` that
+     * declares its entries (the caller has entered the law's own
+     * subsection, named after the law, inside `subsection Contact`), an
+     * override of parse_parameters() that reads them, and one line
+     * NDDA_REGISTER_CONTACT_LAW(Class, "name", "description") at the end of
+     * its `.cc` file. ContactSettings::law selects the law of a scene; the
+     * scene file cannot name one yet (doc/contact.md, "Contact laws").
+     *
+     * @ingroup contact
+     */
+    class ContactLaw
+    {
+    public:
+      virtual ~ContactLaw() = default;
+
+      /**
+       * Read the law's parameters. The caller has entered the law's
+       * subsection. The default reads nothing.
+       */
+      virtual void
+      parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Add the springs of a contact in state @p contact.state (locked or
+       * sliding) on option @p o, all stiffnesses times @p scale: their
+       * forces at d = 0 to @p force and, unless @p stiffness is null, their
+       * stiffness to @p stiffness.
+       *
+       * @param o The option the contact acts on.
+       * @param contact Its state, anchor, sliding direction and friction.
+       * @param scale Factor on all stiffnesses (the fraction of a step's
+       *   force the Newmark integrator uses, 1 otherwise).
+       * @param settings The scene's contact settings.
+       * @param stiffness Null, or a square matrix of the size of o.dofs,
+       *   indexed like o.dofs, to which the stiffness is added (it may be
+       *   non-symmetric).
+       * @param force A vector indexed by global dof (the entries of
+       *   o.dofs) to which the forces at d = 0 are added.
+       */
+      virtual void
+      add_springs(const Option               &o,
+                  const ContactState         &contact,
+                  const double                scale,
+                  const ContactSettings      &settings,
+                  dealii::FullMatrix<double> *stiffness,
+                  dealii::Vector<double>     &force) const = 0;
+
+      /**
+       * The state of a contact, resolved on option @p o and in state
+       * @p contact.state (open, locked or sliding), after the trial
+       * solution @p trial: the open-close criteria and the friction limit.
+       *
+       * @param sign Set to the sliding direction of the new state (+1 or
+       *   -1 if it is sliding with friction, 0 otherwise).
+       * @return open, locked or sliding.
+       */
+      virtual State
+      classify(const Option          &o,
+               const ContactState    &contact,
+               const Trial           &trial,
+               const ContactSettings &settings,
+               int                   &sign) const = 0;
+
+      /**
+       * The anchor (a ratio along the edge's line) of the shear spring of
+       * a contact that locks after the trial solution @p trial, having been
+       * in state @p contact.state. The default anchors it at the vertex's
+       * projection at the step's start, o.ratio.
+       */
+      virtual double
+      anchor_on_locking(const Option          &o,
+                        const ContactState    &contact,
+                        const Trial           &trial,
+                        const ContactSettings &settings) const;
+
+      /**
+       * Whether contacts that touch when the run starts are bonded with
+       * the joint strength of @p settings. The default: never.
+       */
+      virtual bool
+      bonds_initial_contacts(const ContactSettings &settings) const;
+
+      /**
+       * Whether the bond of a bonded, locked contact holds under the trial
+       * solution @p trial. A bond that does not hold is broken for good;
+       * the contact is then classified by classify(). The default: it
+       * does not hold (a law that bonds must override this).
+       */
+      virtual bool
+      bond_holds(const Option          &o,
+                 const ContactState    &contact,
+                 const Trial           &trial,
+                 const ContactSettings &settings) const;
+
+      /**
+       * The energy (J) stored in the springs of a contact in state
+       * @p contact.state (locked or sliding) on option @p o at the end of
+       * the step with the solution @p trial.
+       */
+      virtual double
+      energy(const Option          &o,
+             const ContactState    &contact,
+             const Trial           &trial,
+             const ContactSettings &settings) const = 0;
+    };
+
+    /**
+     * Register a contact law under @p name. Called by
+     * NDDA_REGISTER_CONTACT_LAW before main() runs; throws if the name is
+     * taken.
+     *
+     * @param name Name of the law and of its own subsection.
+     * @param description What the law does; it documents the law's
+     *   selection and its parameters.
+     * @param declare_parameters Declares the law's entries.
+     * @param create Creates a law with default parameters.
+     */
+    void
+    register_contact_law(const std::string &name,
+                         const std::string &description,
+                         void (*declare_parameters)(ParameterHandler &),
+                         std::unique_ptr<ContactLaw> (*create)());
+
+    /** The names of all registered laws, sorted. */
+    std::vector<std::string>
+    contact_law_names();
+
+    /** The description a law was registered with. */
+    std::string
+    contact_law_description(const std::string &name);
+
+    /**
+     * Declare, in the subsection the caller has entered (`Contact`), one
+     * subsection per registered law with that law's entries.
+     */
+    void
+    declare_contact_law_parameters(ParameterHandler &prm);
+
+    /**
+     * Create the law called @p name with its default parameters. Throws
+     * dealii::ExcMessage naming the name received and the known names if
+     * @p name is not registered.
+     */
+    std::unique_ptr<ContactLaw>
+    create_contact_law(const std::string &name);
+
+    /**
+     * Create the law called @p name and read its parameters from its
+     * subsection of the subsection the caller has entered (`Contact`), as
+     * declared by declare_contact_law_parameters().
+     */
+    std::unique_ptr<ContactLaw>
+    create_contact_law(const std::string &name, ParameterHandler &prm);
+
+    /** Name of the law ContactHandler uses when ContactSettings has none. */
+    inline const std::string default_contact_law = "penalty Coulomb";
+
+    namespace internal
+    {
+      /**
+       * Registers a law when it is constructed; one static object of this
+       * type per law, made by NDDA_REGISTER_CONTACT_LAW.
+       */
+      template <typename LawType>
+      struct RegisterContactLaw
+      {
+        RegisterContactLaw(const char *name, const char *description)
+        {
+          register_contact_law(name,
+                               description,
+                               &LawType::declare_parameters,
+                               []() -> std::unique_ptr<ContactLaw> {
+                                 return std::make_unique<LawType>();
+                               });
+        }
+      };
+    } // namespace internal
+  }   // namespace contact
+} // namespace ndda
+
+/**
+ * Register the contact law @p classname (derived from
+ * ndda::contact::ContactLaw, default constructible, with a static
+ * declare_parameters(ParameterHandler &)) under @p name with
+ * @p description. Put it at the end of the law's `.cc` file, inside the
+ * namespace of @p classname.
+ *
+ * It also defines the function link_contact_law_<classname>() in that
+ * namespace. ndda is a static library: the linker takes an object file
+ * from it only if something calls into that file, so the registry calls
+ * this function of each built-in law to keep the law (and its
+ * registration) in every program. A law compiled into a program or a
+ * shared library does not need that.
+ */
+#define NDDA_REGISTER_CONTACT_LAW(classname, name, description)  \
+  void link_contact_law_##classname();                           \
+  void link_contact_law_##classname()                            \
+  {}                                                             \
+  namespace                                                      \
+  {                                                              \
+    const ndda::contact::internal::RegisterContactLaw<classname> \
+      register_contact_law_##classname(name, description);       \
+  }
+
+#endif

@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The narrow phase of ContactHandler::begin_step(): from the candidates of
+// detect() to the contacts of a step, one function per contact type
+// (vertex-edge, vertex-vertex, edge-edge as two vertex-edge);
+// doc/contact.md, "From candidates to contacts".
+
+#include <ndda/contact/contact_handler.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ndda
+{
+  namespace contact
+  {
+    namespace
+    {
+      /** Vertices of the reference triangle (deal.II's numbering). */
+      const Point<2> unit_vertex[3] = {Point<2>(0, 0),
+                                       Point<2>(1, 0),
+                                       Point<2>(0, 1)};
+
+      /** Cosine of the largest angle between two edges taken as parallel. */
+      constexpr double parallel_cosine = 0.99985; // 1 degree
+
+      double
+      cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
+      {
+        return a[0] * b[1] - a[1] * b[0];
+      }
+
+      /** Outward unit normal of boundary edge @p e. */
+      Tensor<1, 2>
+      outward(const std::vector<Point<2>>     &vertices,
+              const std::vector<BoundaryEdge> &edges,
+              const unsigned int               e)
+      {
+        const Tensor<1, 2> t = vertices[edges[e].v1] - vertices[edges[e].v0];
+        return Tensor<1, 2>({t[1], -t[0]}) / t.norm();
+      }
+
+      /** The end of boundary edge @p e that is not @p v. */
+      unsigned int
+      other_end(const BoundaryEdge &e, const unsigned int v)
+      {
+        return e.v0 == v ? e.v1 : e.v0;
+      }
+    } // namespace
+
+
+
+    Option
+    ContactHandler::make_option(const std::vector<Point<2>> &vertices,
+                                const unsigned int           vertex,
+                                const unsigned int           edge) const
+    {
+      const BoundaryEdge &e = edges[edge];
+      const Point<2>     &a = vertices[e.v0];
+      const Point<2>     &b = vertices[e.v1];
+      const Point<2>     &p = vertices[vertex];
+
+      Option o;
+      o.vertex                   = vertex;
+      o.edge                     = edge;
+      const Tensor<1, 2> t       = b - a;
+      o.length                   = t.norm();
+      o.tangent                  = t / o.length;
+      o.normal[0]                = o.tangent[1];
+      o.normal[1]                = -o.tangent[0];
+      o.ratio                    = ((p - a) * t) / (o.length * o.length);
+      o.gap                      = (p - a) * o.normal;
+      const double       clamped = std::clamp(o.ratio, 0., 1.);
+      const unsigned int k0      = e.local_vertex;
+      const unsigned int k1      = (k0 + 1) % 3;
+      const Point<2>     xi =
+        unit_vertex[k0] + clamped * (unit_vertex[k1] - unit_vertex[k0]);
+      const unsigned int n_cell_dofs = dofs.fe->n_dofs_per_cell();
+
+      o.dofs.resize(2 + n_cell_dofs);
+      o.wn.resize(2 + n_cell_dofs);
+      o.wt.resize(2 + n_cell_dofs);
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          o.dofs[c] = (*dofs.vertex_dofs)[vertex][c];
+          o.wn[c]   = o.normal[c];
+          o.wt[c]   = o.tangent[c];
+        }
+      const global_dof_index *cell_dofs =
+        dofs.cell_dofs->data() + std::size_t(e.cell) * n_cell_dofs;
+      for (unsigned int i = 0; i < n_cell_dofs; ++i)
+        {
+          const double       N = dofs.fe->shape_value(i, xi);
+          const unsigned int c = (*dofs.component)[i];
+          o.dofs[2 + i]        = cell_dofs[i];
+          o.wn[2 + i]          = -N * o.normal[c];
+          o.wt[2 + i]          = -N * o.tangent[c];
+        }
+      return o;
+    }
+
+
+
+    bool
+    ContactHandler::in_cell(const unsigned int vertex,
+                            const unsigned int edge) const
+    {
+      const unsigned int      n_cell_dofs = dofs.fe->n_dofs_per_cell();
+      const global_dof_index  dof         = (*dofs.vertex_dofs)[vertex][0];
+      const global_dof_index *cd =
+        dofs.cell_dofs->data() + std::size_t(edges[edge].cell) * n_cell_dofs;
+      return std::find(cd, cd + n_cell_dofs, dof) != cd + n_cell_dofs;
+    }
+
+
+
+    bool
+    ContactHandler::facing(const std::vector<Point<2>> &vertices,
+                           const unsigned int           vertex,
+                           const unsigned int           edge) const
+    {
+      Tensor<1, 2> n;
+      for (const unsigned int f : edges_at_vertex[vertex])
+        n += outward(vertices, edges, f);
+      return n * outward(vertices, edges, edge) < -1e-3 * n.norm();
+    }
+
+
+
+    bool
+    ContactHandler::remembered(const std::vector<Point<2>> &vertices,
+                               const unsigned int           vertex,
+                               const unsigned int           edge) const
+    {
+      return memory.count(key(vertex, edge)) > 0 ||
+             straight_neighbour_in_memory(vertices, vertex, edge) != invalid;
+    }
+
+
+
+    std::vector<ContactHandler::VertexEdge>
+    ContactHandler::vertex_edge_pairs(
+      const std::vector<Point<2>>  &vertices,
+      const std::vector<Candidate> &candidates) const
+    {
+      // The candidates are sorted by vertex, then edge, and so is the
+      // result.
+      std::vector<VertexEdge> vertex_edge;
+      for (auto first = candidates.begin(); first != candidates.end();)
+        {
+          auto last = first;
+          while (last != candidates.end() && last->vertex == first->vertex)
+            ++last;
+          const std::vector<VertexEdge> touched =
+            touched_edges(vertices, first, last);
+          vertex_edge.insert(vertex_edge.end(), touched.begin(), touched.end());
+          first = last;
+        }
+      return vertex_edge;
+    }
+
+
+
+    std::vector<ContactHandler::VertexEdge>
+    ContactHandler::touched_edges(
+      const std::vector<Point<2>>           &vertices,
+      std::vector<Candidate>::const_iterator first,
+      std::vector<Candidate>::const_iterator last) const
+    {
+      std::vector<const Candidate *> list;
+      for (auto c = first; c != last; ++c)
+        {
+          if (c->type != CandidateType::vertex_edge ||
+              in_cell(c->vertex, c->edge) ||
+              !facing(vertices, c->vertex, c->edge))
+            continue;
+          if (c->distance < -settings.ignore_depth &&
+              !remembered(vertices, c->vertex, c->edge))
+            continue;
+          list.push_back(&*c);
+        }
+      std::vector<bool> dropped(list.size(), false);
+      for (unsigned int a = 0; a < list.size(); ++a)
+        for (unsigned int b = a + 1; b < list.size(); ++b)
+          {
+            const BoundaryEdge &ea = edges[list[a]->edge];
+            const BoundaryEdge &eb = edges[list[b]->edge];
+            // Consecutive edges: in -> corner -> out.
+            const BoundaryEdge *in = nullptr, *out = nullptr;
+            if (ea.v1 == eb.v0)
+              in = &ea, out = &eb;
+            else if (eb.v1 == ea.v0)
+              in = &eb, out = &ea;
+            if (in == nullptr)
+              continue;
+            const Tensor<1, 2> t_in  = vertices[in->v1] - vertices[in->v0];
+            const Tensor<1, 2> t_out = vertices[out->v1] - vertices[out->v0];
+            if (cross(t_in, t_out) < -1e-12 * t_in.norm() * t_out.norm())
+              continue; // concave corner: both faces may touch
+            const bool ra =
+              remembered(vertices, list[a]->vertex, list[a]->edge);
+            const bool rb =
+              remembered(vertices, list[b]->vertex, list[b]->edge);
+            const bool drop_a =
+              (ra != rb) ? rb : list[a]->distance < list[b]->distance;
+            dropped[drop_a ? a : b] = true;
+          }
+      std::vector<VertexEdge> touched;
+      for (unsigned int a = 0; a < list.size(); ++a)
+        if (!dropped[a])
+          touched.emplace_back(list[a]->vertex, list[a]->edge);
+      return touched;
+    }
+
+
+
+    void
+    ContactHandler::add_vertex_edge_contacts(
+      const std::vector<Point<2>>   &vertices,
+      const std::vector<VertexEdge> &vertex_edge)
+    {
+      for (const auto &[v, e] : vertex_edge)
+        {
+          Contact c;
+          c.options.push_back(make_option(vertices, v, e));
+          c.friction = std::min(edge_friction[e], vertex_friction[v]);
+          contacts.push_back(std::move(c));
+        }
+    }
+
+
+
+    bool
+    ContactHandler::has_vertex_edge_at(
+      const std::vector<VertexEdge> &vertex_edge,
+      const unsigned int             vertex,
+      const unsigned int             corner) const
+    {
+      const auto range = std::equal_range(vertex_edge.begin(),
+                                          vertex_edge.end(),
+                                          std::make_pair(vertex, 0u),
+                                          [](const auto &x, const auto &y) {
+                                            return x.first < y.first;
+                                          });
+      for (auto it = range.first; it != range.second; ++it)
+        if (edges[it->second].v0 == corner || edges[it->second].v1 == corner)
+          return true;
+      return false;
+    }
+
+
+
+    std::set<std::pair<unsigned int, unsigned int>>
+    ContactHandler::vertex_vertex_pairs(
+      const std::vector<Candidate>  &candidates,
+      const std::vector<VertexEdge> &vertex_edge) const
+    {
+      std::set<std::pair<unsigned int, unsigned int>> pairs;
+      for (const Candidate &c : candidates)
+        if (c.type == CandidateType::vertex_vertex)
+          {
+            const unsigned int corner =
+              c.edge_ratio < 0.5 ? edges[c.edge].v0 : edges[c.edge].v1;
+            if (in_cell(c.vertex, c.edge) ||
+                has_vertex_edge_at(vertex_edge, c.vertex, corner))
+              continue;
+            pairs.insert(std::minmax(c.vertex, corner));
+          }
+      return pairs;
+    }
+
+
+
+    void
+    ContactHandler::add_vertex_vertex_contacts(
+      const std::vector<Point<2>>   &vertices,
+      const std::vector<Candidate>  &candidates,
+      const std::vector<VertexEdge> &vertex_edge)
+    {
+      for (const auto &[a, b] : vertex_vertex_pairs(candidates, vertex_edge))
+        {
+          if (has_vertex_edge_at(vertex_edge, b, a))
+            continue;
+          bool neighbours = false;
+          for (const unsigned int e : edges_at_vertex[a])
+            neighbours = neighbours || other_end(edges[e], a) == b;
+          if (neighbours)
+            continue;
+
+          // Edge-edge: an edge e at b and an edge f at a that leave the
+          // pair in the same direction and overlap.
+          unsigned int face_e = invalid, face_f = invalid;
+          for (const unsigned int e : edges_at_vertex[b])
+            for (const unsigned int f : edges_at_vertex[a])
+              {
+                Tensor<1, 2> we =
+                  vertices[other_end(edges[e], b)] - vertices[b];
+                Tensor<1, 2> wf =
+                  vertices[other_end(edges[f], a)] - vertices[a];
+                if (we * wf > parallel_cosine * we.norm() * wf.norm() &&
+                    facing(vertices, a, e) && facing(vertices, b, f))
+                  face_e = e, face_f = f;
+              }
+          if (face_e != invalid)
+            add_edge_edge_contacts(vertices, vertex_edge, a, b, face_e, face_f);
+          else
+            add_vertex_vertex_contact(vertices, a, b);
+        }
+    }
+
+
+
+    void
+    ContactHandler::add_edge_edge_contacts(
+      const std::vector<Point<2>>   &vertices,
+      const std::vector<VertexEdge> &vertex_edge,
+      const unsigned int             a,
+      const unsigned int             b,
+      const unsigned int             face_e,
+      const unsigned int             face_f)
+    {
+      for (const auto &[v, e] :
+           {std::make_pair(a, face_e), std::make_pair(b, face_f)})
+        {
+          // Already a vertex-edge contact (the pair was found from the
+          // other vertex's side): not twice.
+          if (std::binary_search(vertex_edge.begin(),
+                                 vertex_edge.end(),
+                                 std::make_pair(v, e)))
+            continue;
+          Contact face;
+          face.options.push_back(make_option(vertices, v, e));
+          const Option &o = face.options[0];
+          if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
+            continue; // v is beyond the edge: no overlap
+          if (o.gap < -settings.ignore_depth && !remembered(vertices, v, e))
+            continue; // the other side of a thin body
+          face.friction = std::min(vertex_friction[a], vertex_friction[b]);
+          contacts.push_back(std::move(face));
+        }
+    }
+
+
+
+    void
+    ContactHandler::add_vertex_vertex_contact(
+      const std::vector<Point<2>> &vertices,
+      const unsigned int           a,
+      const unsigned int           b)
+    {
+      Contact c;
+      c.vertex_a = a;
+      c.vertex_b = b;
+      for (const unsigned int e : edges_at_vertex[b])
+        if (facing(vertices, a, e))
+          c.options.push_back(make_option(vertices, a, e));
+      for (const unsigned int f : edges_at_vertex[a])
+        if (facing(vertices, b, f))
+          c.options.push_back(make_option(vertices, b, f));
+      if (c.options.empty())
+        return;
+      // A new pair whose vertex starts deep inside the other's corner
+      // (behind both of its edges) is not a contact: the two vertices lie
+      // on opposite sides of a thin body.
+      bool known = memory.count({a, b, invalid}) > 0;
+      for (const Option &o : c.options)
+        known = known || remembered(vertices, o.vertex, o.edge);
+      double depth = 0;
+      for (const unsigned int v : {a, b})
+        {
+          double inside = std::numeric_limits<double>::max();
+          for (const Option &o : c.options)
+            if (o.vertex == v)
+              inside = std::min(inside, -o.gap);
+          if (inside < std::numeric_limits<double>::max())
+            depth = std::max(depth, inside);
+        }
+      if (!known && depth > settings.ignore_depth)
+        return;
+      c.friction = std::min(vertex_friction[a], vertex_friction[b]);
+      contacts.push_back(std::move(c));
+    }
+  } // namespace contact
+} // namespace ndda
