@@ -26,6 +26,7 @@
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/element_cache.h>
+#include <ndda/physics/finite_element.h>
 #include <ndda/physics/linear_solver.h>
 
 #include <fstream>
@@ -469,6 +470,7 @@ namespace ndda
     std::unique_ptr<FESystem<dim>>       fe;
     MappingFE<dim>                       mapping;
     std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
+    unsigned int                         n_output_subdivisions = 1;
     DoFHandler<dim>                      dof_handler;
 
     ElementCache<dim> element_cache;
