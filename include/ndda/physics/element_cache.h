@@ -78,6 +78,9 @@ namespace ndda
     /**
      * The quadratures of the element (Element::cell_quadrature and
      * Element::mass_quadrature); set them before the first update().
+     *
+     * @param cell_quadrature For stiffness, strain and stress.
+     * @param mass_quadrature For the consistent mass.
      */
     void
     set_quadratures(const Quadrature<dim> &cell_quadrature,

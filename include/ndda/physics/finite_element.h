@@ -34,7 +34,8 @@ namespace ndda
     Quadrature<2> cell_quadrature;
     /// Consistent mass: QGaussSimplex(degree + 1).
     Quadrature<2> mass_quadrature;
-    /// Line and face loads on the cell faces: QGaussSimplex<1>(degree + 1).
+    /// Line loads (pressure, traction) on cell faces:
+    /// QGaussSimplex<1>(degree + 1).
     Quadrature<1> face_quadrature;
     /// The mapping, linear_mapping() for every element (see there).
     MappingFE<2> mapping;
@@ -67,6 +68,9 @@ namespace ndda
    * act on vertex dofs: discontinuous elements cannot be used), one without
    * support points, and one whose mass quadrature deal.II's QGaussSimplex
    * does not have (degree above 3).
+   *
+   * @param name The element's name, e.g. FE_SimplexP(2).
+   * @ingroup physics
    */
   Element
   make_element(const std::string &name);
@@ -78,6 +82,8 @@ namespace ndda
    * straight-sided triangles. It depends on the reference cell only, so a
    * Simulator holds it from its construction on, before it knows its
    * element.
+   *
+   * @ingroup physics
    */
   MappingFE<2>
   linear_mapping();
