@@ -1,13 +1,20 @@
 #!/usr/bin/env bash
 # ndda: build and run.
 #
-#   ./ndda.sh                  install what is missing, build, run prm/default.prm
+#   ./ndda.sh                  install what is missing, build the program
+#                              only (target ndda), run prm/default.prm
 #   ./ndda.sh path/scene.prm   the same, running the given scene
-#   ./ndda.sh test             install, build, and run the whole test suite (ctest)
-#   ./ndda.sh build            install and build only
-#   ./ndda.sh validate         long: run every validation case and rewrite
-#                              doc/validation.md, the gallery, the charts and
-#                              the stability maps (not part of `test`)
+#   ./ndda.sh test [ARGS]      install, build everything, and run the whole
+#                              test suite (ctest ARGS, e.g. -L scene)
+#   ./ndda.sh test-fast [ARGS] install, build only what the unit tests need
+#                              (target ndda_unit_tests), run them (ctest -L
+#                              unit ARGS; under a minute)
+#   ./ndda.sh build            install and build everything (library,
+#                              program, test programs, benchmarks)
+#   ./ndda.sh validate         long: build everything, run every validation
+#                              case and rewrite doc/validation.md, the
+#                              gallery, the charts and the stability maps
+#                              (not part of `test`)
 #
 # Environment: NDDA_BUILD_DIR (default: build), NDDA_JOBS (default: number of
 # cores), NDDA_BUILD_TYPE (default: Release).
@@ -45,27 +52,36 @@ install_missing() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}"
 }
 
+# build TARGET [PACKAGES...]: install what is missing, configure if needed,
+# and build TARGET (all: everything).
 build() {
+  local target="$1"
+  shift
   install_missing "$@"
   if [ ! -f "$build_dir/CMakeCache.txt" ]; then
     echo "ndda.sh: configuring a $build_type build in $build_dir"
     cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE="$build_type"
   fi
-  echo "ndda.sh: building with $jobs jobs"
-  cmake --build "$build_dir" -- -j"$jobs"
+  echo "ndda.sh: building $target with $jobs jobs"
+  cmake --build "$build_dir" --target "$target" -- -j"$jobs"
 }
 
 case "${1:-}" in
   test)
-    build
+    build all
     cd "$build_dir"
     ctest --output-on-failure -j"$jobs" "${@:2}"
     ;;
+  test-fast)
+    build ndda_unit_tests
+    cd "$build_dir"
+    ctest --output-on-failure -j"$jobs" -L unit "${@:2}"
+    ;;
   build)
-    build
+    build all
     ;;
   validate)
-    build "${plot_packages[@]}"
+    build all "${plot_packages[@]}"
     py=/usr/bin/python3
     echo "ndda.sh: running the test suite (every validation case)"
     (cd "$build_dir" && ctest --output-on-failure -j"$jobs" -E '^validation_page$')
@@ -88,7 +104,7 @@ case "${1:-}" in
     "$here/scripts/validate_pictures.sh" "$build_dir/ndda" "$py"
     ;;
   -h|--help)
-    sed -n '2,15p' "$0"
+    sed -n '2,20p' "$0"
     ;;
   *)
     scene="${1:-$here/prm/default.prm}"
@@ -97,7 +113,7 @@ case "${1:-}" in
       exit 1
     fi
     scene="$(cd "$(dirname "$scene")" && pwd)/$(basename "$scene")"
-    build
+    build ndda
     "$build_dir/ndda" "$scene"
     ;;
 esac

@@ -91,7 +91,7 @@ namespace ndda
     : console(std::cout.rdbuf())
     , pcout(console, true)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , mapping(FE_SimplexP<dim>(1))
+    , mapping(linear_mapping())
     , dof_handler(mesh.get_triangulation())
   {
     parameters.read_file(parameter_file, prm);
@@ -107,7 +107,7 @@ namespace ndda
     , console(std::cout.rdbuf())
     , pcout(console, true)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , mapping(FE_SimplexP<dim>(1))
+    , mapping(linear_mapping())
     , dof_handler(mesh.get_triangulation())
   {
     if (triangulation != nullptr)
@@ -278,9 +278,14 @@ namespace ndda
   void
   Simulator<dim>::setup_dofs(const bool element_matrices)
   {
-    const unsigned int degree = parameters.control.element_degree;
-    fe = std::make_unique<FESystem<dim>>(FE_SimplexP<dim>(degree), dim);
-    face_quadrature = std::make_unique<QGaussSimplex<dim - 1>>(degree + 1);
+    // The element by name and what travels with it (physics/finite_element.h).
+    auto element = make_element(parameters.control.finite_element);
+    fe           = std::move(element.system);
+    face_quadrature =
+      std::make_unique<Quadrature<dim - 1>>(element.face_quadrature);
+    element_cache.set_quadratures(element.cell_quadrature,
+                                  element.mass_quadrature);
+    n_output_subdivisions = element.n_output_subdivisions;
     dof_handler.distribute_dofs(*fe);
     cell_material.resize(mesh.get_triangulation().n_active_cells());
     for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
@@ -1562,8 +1567,8 @@ namespace ndda
           << "  blocks: " << mesh.n_blocks()
           << ", cells: " << mesh.get_triangulation().n_active_cells()
           << ", vertices: " << mesh.get_triangulation().n_vertices()
-          << ", degrees of freedom: " << dof_handler.n_dofs() << " (P"
-          << parameters.control.element_degree << ")\n"
+          << ", degrees of freedom: " << dof_handler.n_dofs() << " ("
+          << fe->base_element(0).get_name() << ")\n"
           << "  constrained nodes: "
           << boundary_constraints.constrained_nodes().size()
           << ", output: " << directory << std::endl;

@@ -29,6 +29,7 @@
 #include <ndda/physics/constraints.h>
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
+#include <ndda/physics/finite_element.h>
 #include <ndda/physics/linear_solver.h>
 #include <ndda/physics/loads.h>
 #include <ndda/postprocess/visualization.h>
@@ -138,6 +139,13 @@ namespace ndda
     get_mapping() const
     {
       return mapping;
+    }
+
+    /** Subdivisions of a cell in the output (from the element). */
+    unsigned int
+    get_n_output_subdivisions() const
+    {
+      return n_output_subdivisions;
     }
 
     double
@@ -450,6 +458,7 @@ namespace ndda
     std::unique_ptr<FESystem<dim>>       fe;
     MappingFE<dim>                       mapping;
     std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
+    unsigned int                         n_output_subdivisions = 1;
     DoFHandler<dim>                      dof_handler;
 
     ElementCache<dim> element_cache;

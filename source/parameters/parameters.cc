@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/finite_element.h>
 
 #include <cmath>
 #include <fstream>
@@ -311,11 +312,29 @@ namespace ndda
                         "when the step falls below 1e-6 of Time step, or "
                         "when 1000 steps in a row were cut below 1e-3 of "
                         "it (a run that crawls).");
+      // has_to_be_set = true only so that ParameterHandler records whether
+      // a scene set the entry (get_entries_wrongly_not_set()): a scene
+      // that gives both entries must mean the same element.
       prm.declare_entry("Element degree",
                         "1",
                         Patterns::Integer(1, 2),
                         "Polynomial degree of FE_SimplexP: 1 (three-node "
-                        "triangles, as in the thesis) or 2.");
+                        "triangles, as in the thesis) or 2. Short for "
+                        "'Finite element = FE_SimplexP(degree)'.",
+                        true);
+      prm.declare_entry(
+        "Finite element",
+        "",
+        Patterns::Anything(),
+        "The scalar deal.II element on the triangle, by name; ndda builds "
+        "the displacement element FESystem(element, 2) and the element's "
+        "quadratures, mapping and output subdivisions from it. "
+        "FE_SimplexP(k) or FE_SimplexP_Bubbles(k), k = 1 or 2, or any "
+        "name FETools::get_fe_by_name() knows, including elements a "
+        "program registered with FETools::add_fe_name(). The element "
+        "needs one dof on each vertex (no discontinuous elements). Empty: "
+        "FE_SimplexP(Element degree). Given, it overrides Element degree; "
+        "a scene that gives both must mean the same element.");
       prm.declare_entry("Linear solver",
                         "UMFPACK",
                         Patterns::Selection("UMFPACK|KLU|CG-AMG"),
@@ -388,7 +407,6 @@ namespace ndda
                   ExcMessage("Control/Maximum displacement ratio: must be "
                              "greater than zero, e.g. 0.01."));
       max_step_cuts     = prm.get_integer("Maximum step cuts");
-      element_degree    = prm.get_integer("Element degree");
       const auto ls     = prm.get("Linear solver");
       linear_solver     = ls == "UMFPACK" ? LinearSolver::umfpack :
                           ls == "KLU"     ? LinearSolver::klu :
@@ -404,6 +422,26 @@ namespace ndda
                              "zero with 'Constraint method = penalty'."));
       matrix_update_tolerance = prm.get_double("Matrix update tolerance");
       rotate_with_spin        = prm.get_bool("Rotate with spin");
+
+      // The element: Finite element, or else FE_SimplexP(Element degree).
+      const std::string by_degree =
+        "FE_SimplexP(" + prm.get("Element degree") + ")";
+      finite_element      = Utilities::trim(prm.get("Finite element"));
+      element_from_degree = finite_element.empty();
+      if (element_from_degree)
+        finite_element = by_degree;
+      const Element element = make_element(finite_element);
+      // The entry's path as ParameterHandler mangles it.
+      const bool degree_given = prm.get_entries_wrongly_not_set().count(
+                                  "Control.Element_20degree") == 0;
+      AssertThrow(element_from_degree || !degree_given ||
+                    element.scalar->get_name() ==
+                      make_element(by_degree).scalar->get_name(),
+                  ExcMessage("Control/Finite element: '" + finite_element +
+                             "' and Control/Element degree = " +
+                             prm.get("Element degree") + " (" + by_degree +
+                             ") name different elements. Give only one of "
+                             "the two entries."));
       prm.leave_subsection();
     }
 
@@ -1299,11 +1337,23 @@ namespace ndda
       output.parse_parameters(prm, scene_name);
       postprocess.parse_parameters(prm);
 
-      AssertThrow(!output.write_hdf5 || control.element_degree == 1,
-                  ExcMessage("Output/Write hdf5: HDF5/XDMF output in "
-                             "deal.II 9.4 supports only linear cells, but "
-                             "Control/Element degree is 2. Set 'Write hdf5 "
-                             "= false' or use degree 1."));
+      if (output.write_hdf5)
+        {
+          const Element      element = make_element(control.finite_element);
+          const unsigned int n_subdivisions = element.n_output_subdivisions;
+          AssertThrow(
+            n_subdivisions == 1,
+            ExcMessage(
+              "Output/Write hdf5: HDF5/XDMF output in deal.II 9.4 supports "
+              "only linear cells, but " +
+              (control.element_from_degree ?
+                 "Control/Element degree is " +
+                   std::to_string(element.scalar->degree) :
+                 "Control/Finite element is " + control.finite_element +
+                   " (written with " + std::to_string(n_subdivisions) +
+                   " subdivisions per cell)") +
+              ". Set 'Write hdf5 = false' or use degree 1."));
+        }
       AssertThrow(control.time_step <= control.end_time,
                   ExcMessage(
                     "Control/Time step: " + std::to_string(control.time_step) +

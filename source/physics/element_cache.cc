@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/fe/fe_values.h>
 
 #include <ndda/physics/element_cache.h>
@@ -29,6 +27,17 @@ namespace ndda
 
 
   template <int dim>
+  void
+  ElementCache<dim>::set_quadratures(const Quadrature<dim> &cell_quadrature,
+                                     const Quadrature<dim> &mass_quadrature)
+  {
+    quadrature            = cell_quadrature;
+    this->mass_quadrature = mass_quadrature;
+  }
+
+
+
+  template <int dim>
   unsigned int
   ElementCache<dim>::update(const DoFHandler<dim>       &dof_handler,
                             const Mapping<dim>          &mapping,
@@ -38,10 +47,9 @@ namespace ndda
   {
     const auto        &fe     = dof_handler.get_fe();
     const unsigned int n_dofs = fe.n_dofs_per_cell();
-    // Strain, stress and stiffness need degree 2 (p - 1) (one point for
-    // P1, whose strain is constant); the consistent mass needs degree 2 p.
-    const QGaussSimplex<dim> quadrature(fe.degree);
-    const QGaussSimplex<dim> mass_quadrature(fe.degree + 1);
+    AssertThrow(quadrature.size() > 0 && mass_quadrature.size() > 0,
+                ExcMessage("ElementCache::update(): call set_quadratures() "
+                           "with the element's quadratures first."));
     n_q_points = quadrature.size();
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();

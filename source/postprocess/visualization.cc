@@ -30,7 +30,7 @@ namespace ndda
       for (const auto &postprocessor : postprocessors)
         postprocessor->add_fields(simulator, frame);
       data_out.build_patches(simulator.get_mapping(),
-                             simulator.get_dof_handler().get_fe().degree);
+                             simulator.get_n_output_subdivisions());
       DataOutBase::VtkFlags flags;
       flags.compression_level = DataOutBase::VtkFlags::best_speed;
       data_out.set_flags(flags);

@@ -62,13 +62,19 @@ namespace ndda
       double           end_time;
       double           max_displacement_ratio;
       unsigned int     max_step_cuts;
-      unsigned int     element_degree;
       LinearSolver     linear_solver;
       double           solver_tolerance;
       ConstraintMethod constraint_method;
       double           penalty_factor;
       double           matrix_update_tolerance;
       bool             rotate_with_spin;
+
+      /// The scalar element by name, as make_element() takes it
+      /// (physics/finite_element.h): Finite element, or else
+      /// FE_SimplexP(Element degree).
+      std::string finite_element;
+      /// Whether finite_element comes from Element degree (for messages).
+      bool element_from_degree;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -41,11 +41,13 @@ namespace ndda
    * - stiffness: t * int B^T C B (thesis 3.24),
    * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
    *   time-step factor), with rho scaled to keep the cell's initial mass,
-   * - at every quadrature point of QGaussSimplex(p) (one point for P1,
-   *   whose strain is constant; the stress lives at these points), the
-   *   strain and the spin of each shape function and t * JxW, so that
-   *   stress updates, internal forces and local rotations need no FEValues
-   *   in the time loop. The mass matrix uses QGaussSimplex(p + 1).
+   * - at every point of the element's cell quadrature (QGaussSimplex(p),
+   *   one point for P1, whose strain is constant; the stress lives at these
+   *   points), the strain and the spin of each shape function and
+   *   t * JxW, so that stress updates, internal forces and local rotations
+   *   need no FEValues in the time loop. The mass matrix uses the mass
+   *   quadrature, QGaussSimplex(p + 1). Both come with the element
+   *   (physics/finite_element.h) through set_quadratures().
    *
    * @ingroup physics
    */
@@ -72,6 +74,17 @@ namespace ndda
       /// initial_area / area so that the mass of a cell never changes.
       double initial_area = 0;
     };
+
+    /**
+     * The quadratures of the element (Element::cell_quadrature and
+     * Element::mass_quadrature); set them before the first update().
+     *
+     * @param cell_quadrature For stiffness, strain and stress.
+     * @param mass_quadrature For the consistent mass.
+     */
+    void
+    set_quadratures(const Quadrature<dim> &cell_quadrature,
+                    const Quadrature<dim> &mass_quadrature);
 
     /**
      * (Re)compute the data of all cells, or with @p only_moved_cells only of
@@ -116,6 +129,8 @@ namespace ndda
     std::vector<CellData>                data;
     std::vector<SymmetricTensor<4, dim>> elasticity;
     std::vector<unsigned int>            computed_cells;
+    Quadrature<dim>                      quadrature;
+    Quadrature<dim>                      mass_quadrature;
     unsigned int                         n_q_points = 0;
   };
 } // namespace ndda
