@@ -227,7 +227,7 @@ namespace
                         PlainResult                     &result)
   {
     auto               start = Clock::now();
-    ndda::LinearSolver solver(ndda::parameters::LinearSolver::umfpack, 0.);
+    ndda::LinearSolver solver(ndda::parameters::LinearSolverType::umfpack, 0.);
     solver.factorize(matrix);
     result.matched_factorize_time = seconds_since(start);
 

@@ -319,7 +319,7 @@ namespace ndda
   Simulator<dim>::setup_constraints()
   {
     const NodeLocator nodes(mesh, dof_handler, mapping);
-    if (parameters.control.linear_solver == parameters::LinearSolver::cg_amg)
+    if (parameters.control.linear_solver == parameters::LinearSolverType::cg_amg)
       linear_solver->set_rigid_body_modes(nodes.support_points,
                                           nodes.component);
     boundary_constraints.setup(parameters.boundary_conditions,
@@ -415,6 +415,7 @@ namespace ndda
     settings.bond_tension =
       materials.joint.tensile_strength * materials.thickness;
     settings.bond_cohesion = materials.joint.cohesion * materials.thickness;
+    settings.law           = parameters.contact.law;
     settings.average_start_and_end =
       parameters.control.time_integrator->averages_contact_forces();
     contacts.initialize(edges, edge_friction, access, settings);
@@ -1424,7 +1425,7 @@ namespace ndda
     prepare_step();
     step_controller.begin_step(step_number + 1, time);
 
-    // The crack sequence (thesis 5.3): solve the step; if edges fail
+    // The crack sequence (thesis 5.4): solve the step; if edges fail
     // within it, crack the earliest of them and solve the step again on
     // the cracked mesh, until no edge fails (or the limit on crack events
     // is reached). Nothing is committed before: the state is still the

@@ -477,8 +477,8 @@ namespace
         message = ndda_tests::fold_whitespace(e.what());
       }
     const std::string expected =
-      "Contact: 'Hertz' is not a contact law. Known laws: no contact, "
-      "penalty Coulomb.";
+      "Contact/Contact law: 'Hertz' is not a contact law. Known contact "
+      "laws: no contact, penalty Coulomb.";
     std::cout << "  unknown name: "
               << (message.find(expected) != std::string::npos ? expected :
                                                                 message)

@@ -58,7 +58,7 @@ namespace ndda
 
   /**
    * The ndda engine: reads a scene, builds the mesh and the finite element
-   * space, and runs the time loop of thesis 3.11 and 5.3. Every step:
+   * space, and runs the time loop of thesis 3.11 and 5.4. Every step:
    *
    *   for each attempt of the step controller: detect contacts, solve
    *   (K + c_M M + c_C C + contact springs) d = f with the open-close
@@ -511,7 +511,7 @@ namespace ndda
     std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
 
     ExternalLoads loads;
-    Bolts         bolts;
+    BoltSprings   bolts;
 
     std::vector<PointEvaluator>             measure_points;
     std::vector<std::vector<MeasureSample>> measure_histories;

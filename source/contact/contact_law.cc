@@ -7,7 +7,6 @@
 
 #include <ndda/contact/contact_law.h>
 
-#include <map>
 
 namespace ndda
 {
@@ -17,57 +16,13 @@ namespace ndda
 
     // The built-in laws, see NDDA_REGISTER_CONTACT_LAW.
     void
-    link_contact_law_PenaltyCoulomb();
+    link_plugin_PenaltyCoulomb();
 
-    namespace
+    void
+    ContactLaw::link_builtin_plugins()
     {
-      struct RegistryEntry
-      {
-        std::string description;
-        void (*declare_parameters)(ParameterHandler &);
-        std::unique_ptr<ContactLaw> (*create)();
-      };
-
-      using Registry = std::map<std::string, RegistryEntry>;
-
-      /**
-       * The registry, built on first use: registrations run during static
-       * initialization, in an order nobody controls.
-       */
-      Registry &
-      registry()
-      {
-        static Registry laws;
-        return laws;
-      }
-
-      /** The registry, for lookups: with the built-in laws linked in. */
-      const Registry &
-      registered_laws()
-      {
-        link_contact_law_PenaltyCoulomb();
-        return registry();
-      }
-
-      /** The entry of the law @p name; throws if there is none. */
-      const RegistryEntry &
-      entry_of(const std::string &name)
-      {
-        const Registry &laws  = registered_laws();
-        const auto      found = laws.find(name);
-        if (found == laws.end())
-          {
-            std::string known;
-            for (const std::string &n : contact_law_names())
-              known += (known.empty() ? "" : ", ") + n;
-            AssertThrow(false,
-                        ExcMessage("Contact: '" + name +
-                                   "' is not a contact law. Known laws: " +
-                                   known + "."));
-          }
-        return found->second;
-      }
-    } // namespace
+      link_plugin_PenaltyCoulomb();
+    }
 
 
 
@@ -149,14 +104,7 @@ namespace ndda
                          void (*declare_parameters)(ParameterHandler &),
                          std::unique_ptr<ContactLaw> (*create)())
     {
-      AssertThrow(registry().count(name) == 0,
-                  ExcMessage("Two contact laws are registered under the "
-                             "name '" +
-                             name + "'."));
-      AssertThrow(name.find('|') == std::string::npos,
-                  ExcMessage("The contact law name '" + name +
-                             "' contains '|'."));
-      registry()[name] = {description, declare_parameters, create};
+      ContactLawRegistry::add(name, description, declare_parameters, create);
     }
 
 
@@ -164,10 +112,7 @@ namespace ndda
     std::vector<std::string>
     contact_law_names()
     {
-      std::vector<std::string> names;
-      for (const auto &[name, entry] : registered_laws())
-        names.push_back(name);
-      return names;
+      return ContactLawRegistry::names();
     }
 
 
@@ -175,7 +120,11 @@ namespace ndda
     std::string
     contact_law_description(const std::string &name)
     {
-      return entry_of(name).description;
+      const auto &laws  = ContactLawRegistry::registered();
+      const auto  found = laws.find(name);
+      if (found == laws.end())
+        ContactLawRegistry::create(name); // throws, naming the known laws
+      return found->second.description;
     }
 
 
@@ -183,12 +132,7 @@ namespace ndda
     void
     declare_contact_law_parameters(ParameterHandler &prm)
     {
-      for (const auto &[name, entry] : registered_laws())
-        {
-          prm.enter_subsection(name);
-          entry.declare_parameters(prm);
-          prm.leave_subsection();
-        }
+      ContactLawRegistry::declare_parameters(prm);
     }
 
 
@@ -196,7 +140,7 @@ namespace ndda
     std::unique_ptr<ContactLaw>
     create_contact_law(const std::string &name)
     {
-      return entry_of(name).create();
+      return ContactLawRegistry::create(name);
     }
 
 
@@ -204,11 +148,7 @@ namespace ndda
     std::unique_ptr<ContactLaw>
     create_contact_law(const std::string &name, ParameterHandler &prm)
     {
-      std::unique_ptr<ContactLaw> law = create_contact_law(name);
-      prm.enter_subsection(name);
-      law->parse_parameters(prm);
-      prm.leave_subsection();
-      return law;
+      return ContactLawRegistry::create_and_parse(name, prm);
     }
   } // namespace contact
 } // namespace ndda

@@ -3,6 +3,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
+#include <ndda/contact/contact_law.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/finite_element.h>
 
@@ -408,9 +409,9 @@ namespace ndda
                              "greater than zero, e.g. 0.01."));
       max_step_cuts     = prm.get_integer("Maximum step cuts");
       const auto ls     = prm.get("Linear solver");
-      linear_solver     = ls == "UMFPACK" ? LinearSolver::umfpack :
-                          ls == "KLU"     ? LinearSolver::klu :
-                                            LinearSolver::cg_amg;
+      linear_solver     = ls == "UMFPACK" ? LinearSolverType::umfpack :
+                          ls == "KLU"     ? LinearSolverType::klu :
+                                            LinearSolverType::cg_amg;
       solver_tolerance  = prm.get_double("Solver tolerance");
       constraint_method = prm.get("Constraint method") == "exact" ?
                             ConstraintMethod::exact :
@@ -451,6 +452,16 @@ namespace ndda
     Contact::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
+      prm.declare_entry(
+        "Contact law",
+        contact::default_contact_law,
+        Patterns::Selection(contact::ContactLawRegistry::joined_names()),
+        contact::ContactLawRegistry::documentation(
+          "What happens in a contact once it is found: its springs, the "
+          "open-close and friction criteria, bonds and stored energy (a "
+          "plugin, see include/ndda/contact/contact_law.h; each reads its "
+          "own entries from the subsection of its name). The laws:"));
+      contact::ContactLawRegistry::declare_parameters(prm);
       prm.declare_entry("Enable",
                         "true",
                         Patterns::Bool(),
@@ -515,6 +526,8 @@ namespace ndda
     Contact::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
+      law_name       = prm.get("Contact law");
+      law = contact::ContactLawRegistry::create_and_parse(law_name, prm);
       enabled        = prm.get_bool("Enable");
       penalty_method = prm.get("Penalty") == "fixed" ? PenaltyMethod::fixed :
                                                        PenaltyMethod::automatic;

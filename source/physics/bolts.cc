@@ -5,14 +5,14 @@
 namespace ndda
 {
   void
-  Bolts::setup(const parameters::Bolts &parameters, const NodeLocator &nodes)
+  BoltSprings::setup(const parameters::Bolts &parameters, const NodeLocator &nodes)
   {
     bolts.clear();
     for (const auto &b : parameters.bolts)
       {
         const std::string where   = "Bolts/" + b.name + "/End points";
         const Point<2>    ends[2] = {b.first, b.second};
-        Bolt              bolt;
+        Spring            bolt;
         for (unsigned int e = 0; e < 2; ++e)
           {
             const auto found = nodes.nodes_at_vertex(ends[e], where);
@@ -31,7 +31,7 @@ namespace ndda
 
 
   void
-  Bolts::add_couplings(dealii::DynamicSparsityPattern &dsp) const
+  BoltSprings::add_couplings(dealii::DynamicSparsityPattern &dsp) const
   {
     for (const auto &bolt : bolts)
       for (const auto i : bolt.dofs)
@@ -42,7 +42,7 @@ namespace ndda
 
 
   Tensor<1, 2>
-  Bolts::direction(const Bolt &bolt, const Vector<double> &displacement)
+  BoltSprings::direction(const Spring &bolt, const Vector<double> &displacement)
   {
     std::array<Point<2>, 2> x = {{bolt.first, bolt.second}};
     for (unsigned int e = 0; e < 2; ++e)
@@ -54,7 +54,7 @@ namespace ndda
 
 
   void
-  Bolts::add_stiffness(const Vector<double>         &displacement,
+  BoltSprings::add_stiffness(const Vector<double>         &displacement,
                        dealii::SparseMatrix<double> &matrix) const
   {
     // Thesis 3.6: k_b L L^T with L the unit vector between the anchors on
@@ -75,7 +75,7 @@ namespace ndda
 
 
   void
-  Bolts::add_internal_force(const Vector<double> &displacement,
+  BoltSprings::add_internal_force(const Vector<double> &displacement,
                             Vector<double>       &force) const
   {
     for (const auto &bolt : bolts)
@@ -92,7 +92,7 @@ namespace ndda
 
 
   void
-  Bolts::add_pretension(const Vector<double> &displacement,
+  BoltSprings::add_pretension(const Vector<double> &displacement,
                         Vector<double>       &force) const
   {
     for (const auto &bolt : bolts)
@@ -110,7 +110,7 @@ namespace ndda
 
 
   void
-  Bolts::update(const Vector<double> &displacement, const Vector<double> &d)
+  BoltSprings::update(const Vector<double> &displacement, const Vector<double> &d)
   {
     for (auto &bolt : bolts)
       {
@@ -125,7 +125,7 @@ namespace ndda
 
 
   std::vector<double>
-  Bolts::axial_forces() const
+  BoltSprings::axial_forces() const
   {
     std::vector<double> forces;
     for (const auto &bolt : bolts)
@@ -136,7 +136,7 @@ namespace ndda
 
 
   void
-  Bolts::set_axial_forces(const std::vector<double> &forces)
+  BoltSprings::set_axial_forces(const std::vector<double> &forces)
   {
     AssertDimension(forces.size(), bolts.size());
     for (unsigned int b = 0; b < bolts.size(); ++b)

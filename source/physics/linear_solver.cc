@@ -306,7 +306,7 @@ namespace ndda
 
 
 
-  LinearSolver::LinearSolver(const parameters::LinearSolver type,
+  LinearSolver::LinearSolver(const parameters::LinearSolverType type,
                              const double                   tolerance)
     : type(type)
     , tolerance(tolerance)
@@ -343,12 +343,12 @@ namespace ndda
     auto &impl = *implementation;
     try
       {
-        if (type == parameters::LinearSolver::umfpack)
+        if (type == parameters::LinearSolverType::umfpack)
           {
             impl.umfpack.factorize(matrix);
             return;
           }
-        if (type == parameters::LinearSolver::klu)
+        if (type == parameters::LinearSolverType::klu)
           {
             impl.klu.factorize(matrix);
             return;
@@ -409,12 +409,12 @@ namespace ndda
     const double                tolerance)
   {
     const auto &impl    = *implementation;
-    const bool  umfpack = type == parameters::LinearSolver::umfpack;
+    const bool  umfpack = type == parameters::LinearSolverType::umfpack;
     const auto  n       = static_cast<SuiteSparse_long>(matrix.m());
     if (max_iterations == 0 ||
         !(umfpack ?
             impl.umfpack.size() == n :
-            type == parameters::LinearSolver::klu && impl.klu.size() == n))
+            type == parameters::LinearSolverType::klu && impl.klu.size() == n))
       return 0;
     x.reinit(b.size());
     const double norm = b.l2_norm();
@@ -445,12 +445,12 @@ namespace ndda
   LinearSolver::solve(Vector<double> &x, const Vector<double> &b)
   {
     auto &impl = *implementation;
-    if (type == parameters::LinearSolver::umfpack)
+    if (type == parameters::LinearSolverType::umfpack)
       {
         impl.umfpack.solve(x, b);
         return 1;
       }
-    if (type == parameters::LinearSolver::klu)
+    if (type == parameters::LinearSolverType::klu)
       {
         impl.klu.solve(x, b);
         return 1;

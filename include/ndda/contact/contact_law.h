@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ndda/base/plugin_registry.h>
 #include <ndda/parameters/parameters.h>
 
 #include <memory>
@@ -208,8 +209,8 @@ namespace ndda
      * subsection, named after the law, inside `subsection Contact`), an
      * override of parse_parameters() that reads them, and one line
      * NDDA_REGISTER_CONTACT_LAW(Class, "name", "description") at the end of
-     * its `.cc` file. ContactSettings::law selects the law of a scene; the
-     * scene file cannot name one yet (doc/contact.md, "Contact laws").
+     * its `.cc` file. `set Contact law = name` in `subsection Contact`
+     * selects the law of a scene (ContactSettings::law).
      *
      * @ingroup contact
      */
@@ -307,7 +308,33 @@ namespace ndda
              const ContactState    &contact,
              const Trial           &trial,
              const ContactSettings &settings) const = 0;
+
+      /** For messages (PluginRegistry). */
+      static const char *
+      plugin_kind()
+      {
+        return "contact law";
+      }
+
+      static const char *
+      plugin_kinds()
+      {
+        return "contact laws";
+      }
+
+      static const char *
+      selection_entry()
+      {
+        return "Contact/Contact law";
+      }
+
+      /** Keep the built-in laws in every program. */
+      static void
+      link_builtin_plugins();
     };
+
+    /** The registry of contact laws. */
+    using ContactLawRegistry = PluginRegistry<ContactLaw>;
 
     /**
      * Register a contact law under @p name. Called by
@@ -360,26 +387,6 @@ namespace ndda
     /** Name of the law ContactHandler uses when ContactSettings has none. */
     inline const std::string default_contact_law = "penalty Coulomb";
 
-    namespace internal
-    {
-      /**
-       * Registers a law when it is constructed; one static object of this
-       * type per law, made by NDDA_REGISTER_CONTACT_LAW.
-       */
-      template <typename LawType>
-      struct RegisterContactLaw
-      {
-        RegisterContactLaw(const char *name, const char *description)
-        {
-          register_contact_law(name,
-                               description,
-                               &LawType::declare_parameters,
-                               []() -> std::unique_ptr<ContactLaw> {
-                                 return std::make_unique<LawType>();
-                               });
-        }
-      };
-    } // namespace internal
   }   // namespace contact
 } // namespace ndda
 
@@ -387,24 +394,13 @@ namespace ndda
  * Register the contact law @p classname (derived from
  * ndda::contact::ContactLaw, default constructible, with a static
  * declare_parameters(ParameterHandler &)) under @p name with
- * @p description. Put it at the end of the law's `.cc` file, inside the
- * namespace of @p classname.
- *
- * It also defines the function link_contact_law_<classname>() in that
- * namespace. ndda is a static library: the linker takes an object file
- * from it only if something calls into that file, so the registry calls
- * this function of each built-in law to keep the law (and its
- * registration) in every program. A law compiled into a program or a
- * shared library does not need that.
+ * @p description: NDDA_REGISTER_PLUGIN for this interface. Put it at the
+ * end of the law's `.cc` file, inside the namespace of @p classname.
  */
-#define NDDA_REGISTER_CONTACT_LAW(classname, name, description)  \
-  void link_contact_law_##classname();                           \
-  void link_contact_law_##classname()                            \
-  {}                                                             \
-  namespace                                                      \
-  {                                                              \
-    const ndda::contact::internal::RegisterContactLaw<classname> \
-      register_contact_law_##classname(name, description);       \
-  }
+#define NDDA_REGISTER_CONTACT_LAW(classname, name, description) \
+  NDDA_REGISTER_PLUGIN(ndda::contact::ContactLaw,               \
+                       classname,                               \
+                       name,                                    \
+                       description)
 
 #endif

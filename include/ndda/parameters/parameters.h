@@ -18,6 +18,11 @@ namespace ndda
 {
   using namespace dealii;
 
+  namespace contact
+  {
+    class ContactLaw;
+  }
+
   /**
    * The parameters of a scene, one struct per `.prm` subsection, each with
    * static `declare_parameters` and a `parse_parameters` that checks every
@@ -34,7 +39,8 @@ namespace ndda
    */
   namespace parameters
   {
-    enum class LinearSolver
+    /** The linear solver of Control/Linear solver (physics::LinearSolver). */
+    enum class LinearSolverType
     {
       umfpack,
       klu,
@@ -62,7 +68,7 @@ namespace ndda
       double           end_time;
       double           max_displacement_ratio;
       unsigned int     max_step_cuts;
-      LinearSolver     linear_solver;
+      LinearSolverType linear_solver;
       double           solver_tolerance;
       ConstraintMethod constraint_method;
       double           penalty_factor;
@@ -115,6 +121,10 @@ namespace ndda
       unsigned int       reuse_iterations;
       VertexVertexMethod vertex_vertex_method;
       double             max_penetration_ratio;
+      /// The contact law's name, `set Contact law = ...`, and the law with
+      /// its parameters read (contact/contact_law.h); stateless, shared.
+      std::string                               law_name;
+      std::shared_ptr<const contact::ContactLaw> law;
 
       static void
       declare_parameters(ParameterHandler &prm);

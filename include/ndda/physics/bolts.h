@@ -26,7 +26,7 @@ namespace ndda
    *
    * @ingroup physics
    */
-  class Bolts
+  class BoltSprings
   {
   public:
     using index = dealii::types::global_dof_index;
@@ -82,7 +82,7 @@ namespace ndda
     }
 
   private:
-    struct Bolt
+    struct Spring
     {
       std::array<index, 4> dofs;
       Point<2>             first, second;
@@ -94,9 +94,9 @@ namespace ndda
 
     /** The unit vector from the second anchor to the first, displaced. */
     static Tensor<1, 2>
-    direction(const Bolt &bolt, const Vector<double> &displacement);
+    direction(const Spring &bolt, const Vector<double> &displacement);
 
-    std::vector<Bolt> bolts;
+    std::vector<Spring> bolts;
   };
 } // namespace ndda
 

@@ -28,7 +28,7 @@ namespace ndda
   class LinearSolver
   {
   public:
-    LinearSolver(const parameters::LinearSolver type, const double tolerance);
+    LinearSolver(const parameters::LinearSolverType type, const double tolerance);
     ~LinearSolver();
 
     /**
@@ -83,7 +83,7 @@ namespace ndda
 
   private:
     struct Implementation;
-    const parameters::LinearSolver  type;
+    const parameters::LinearSolverType  type;
     const double                    tolerance;
     std::unique_ptr<Implementation> implementation;
     std::vector<double>             rigid_body_modes;
