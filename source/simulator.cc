@@ -256,20 +256,22 @@ namespace ndda
             const auto [component, base] = fe_ref.system_to_component_index(i);
             const Point<dim> x =
               mapping.transform_unit_to_real_cell(cell, support[base]);
-            kinematics.velocity[dofs[i]] = initial_velocity[b]->value(x, component);
+            kinematics.velocity[dofs[i]] =
+              initial_velocity[b]->value(x, component);
           }
       }
 
     compute_internal_force();
 
     time::StepController::Limits limits;
-    limits.nominal_step              = parameters.control.time_step;
-    limits.end_time                  = parameters.control.end_time;
-    limits.max_cuts                  = parameters.control.max_step_cuts;
-    limits.max_displacement_ratio    = parameters.control.max_displacement_ratio;
-    limits.max_open_close_iterations = parameters.contact.max_open_close_iterations;
-    step_controller                  = time::StepController(limits);
-    is_set_up                        = true;
+    limits.nominal_step           = parameters.control.time_step;
+    limits.end_time               = parameters.control.end_time;
+    limits.max_cuts               = parameters.control.max_step_cuts;
+    limits.max_displacement_ratio = parameters.control.max_displacement_ratio;
+    limits.max_open_close_iterations =
+      parameters.contact.max_open_close_iterations;
+    step_controller = time::StepController(limits);
+    is_set_up       = true;
   }
 
 
@@ -319,7 +321,8 @@ namespace ndda
   Simulator<dim>::setup_constraints()
   {
     const NodeLocator nodes(mesh, dof_handler, mapping);
-    if (parameters.control.linear_solver == parameters::LinearSolverType::cg_amg)
+    if (parameters.control.linear_solver ==
+        parameters::LinearSolverType::cg_amg)
       linear_solver->set_rigid_body_modes(nodes.support_points,
                                           nodes.component);
     boundary_constraints.setup(parameters.boundary_conditions,
@@ -1033,8 +1036,10 @@ namespace ndda
         block_mass[b] += m;
         for (unsigned int k = 0; k < dim; ++k)
           {
-            block_velocity[b][k] += m * kinematics.velocity[dof_map.node_dofs[n][k]];
-            block_force[b][k] += kinematics.inertia_force[dof_map.node_dofs[n][k]];
+            block_velocity[b][k] +=
+              m * kinematics.velocity[dof_map.node_dofs[n][k]];
+            block_force[b][k] +=
+              kinematics.inertia_force[dof_map.node_dofs[n][k]];
           }
       }
     for (unsigned int b = 0; b < n_blocks; ++b)
@@ -1055,15 +1060,19 @@ namespace ndda
         const auto [i, j]   = dof_map.node_dofs[n];
         for (unsigned int k = 0; k < dim; ++k)
           {
-            kinematics.velocity[dof_map.node_dofs[n][k]] -= block_velocity[b][k];
-            kinematics.inertia_force[dof_map.node_dofs[n][k]] -= node_mass[n] * block_force[b][k];
+            kinematics.velocity[dof_map.node_dofs[n][k]] -=
+              block_velocity[b][k];
+            kinematics.inertia_force[dof_map.node_dofs[n][k]] -=
+              node_mass[n] * block_force[b][k];
           }
         rotate_pair(kinematics.velocity, i, j, cs, sn);
         rotate_pair(kinematics.inertia_force, i, j, cs, sn);
         for (unsigned int k = 0; k < dim; ++k)
           {
-            kinematics.velocity[dof_map.node_dofs[n][k]] += block_velocity[b][k];
-            kinematics.inertia_force[dof_map.node_dofs[n][k]] += node_mass[n] * block_force[b][k];
+            kinematics.velocity[dof_map.node_dofs[n][k]] +=
+              block_velocity[b][k];
+            kinematics.inertia_force[dof_map.node_dofs[n][k]] +=
+              node_mass[n] * block_force[b][k];
           }
       }
   }
@@ -1194,9 +1203,9 @@ namespace ndda
             (first_edge_failure.mode == fracture::FailureMode::none ||
              t < first_edge_failure.time))
           {
-            const auto &v               = fracture_edges[e].vertices;
-            first_edge_failure.mode     = failure.mode;
-            first_edge_failure.time     = t;
+            const auto &v           = fracture_edges[e].vertices;
+            first_edge_failure.mode = failure.mode;
+            first_edge_failure.time = t;
             first_edge_failure.location =
               Point<dim>(0.5 * (end_vertices[v[0]] + end_vertices[v[1]]));
           }
@@ -1225,8 +1234,9 @@ namespace ndda
     // DoFHandler: dof vectors by cell, the acceleration as M a over the
     // lumped mass (a force vector must not be copied to both sides of a
     // split node).
-    const std::vector<types::global_dof_index> old_cell_dofs = dof_map.cell_dofs;
-    const auto                                 lumped_mass   = [this]() {
+    const std::vector<types::global_dof_index> old_cell_dofs =
+      dof_map.cell_dofs;
+    const auto lumped_mass = [this]() {
       Vector<double> m(mass_matrix.m());
       for (unsigned int i = 0; i < m.size(); ++i)
         for (auto entry = mass_matrix.begin(i); entry != mass_matrix.end(i);
@@ -1239,9 +1249,9 @@ namespace ndda
     for (unsigned int i = 0; i < acceleration.size(); ++i)
       if (old_mass[i] > 0.)
         acceleration[i] /= old_mass[i];
-    const Vector<double> old_displacement(displacement);
-    const Vector<double> old_velocity(kinematics.velocity);
-    const std::vector<double> bolt_forces = bolts.axial_forces();
+    const Vector<double>          old_displacement(displacement);
+    const Vector<double>          old_velocity(kinematics.velocity);
+    const std::vector<double>     bolt_forces = bolts.axial_forces();
     const contact::ContactHandler old_contacts(contacts);
 
     mesh.crack(edges);
@@ -1432,10 +1442,10 @@ namespace ndda
     // step's start.
     const bool splitting = fracture_enabled && parameters.fracture.split_edges;
     // A penalty raised in a solve that a crack makes void is withdrawn.
-    const double start_stiffness =
-      parameters.contact.enabled ? contacts.get_settings().normal_stiffness :
-                                   0.;
-    unsigned int   crack_events = 0;
+    const double   start_stiffness = parameters.contact.enabled ?
+                                       contacts.get_settings().normal_stiffness :
+                                       0.;
+    unsigned int   crack_events    = 0;
     Vector<double> d;
     double         dt = 0;
     crack_limit_hit   = false;
@@ -1577,8 +1587,8 @@ namespace ndda
     Timer        wall;
     double       last_progress      = 0;
     unsigned int last_progress_step = 0;
-    const double end_time      = parameters.control.end_time;
-    const double interval      = parameters.output.interval;
+    const double end_time           = parameters.control.end_time;
+    const double interval           = parameters.output.interval;
     output_results();
     next_output_time = interval;
     while (time < end_time * (1. - 1e-12))
@@ -1629,8 +1639,8 @@ namespace ndda
       }
     write_statistics();
     pcout << "  done: " << step_number << " steps, "
-          << step_controller.n_total_cuts()
-          << " step cuts, " << n_matrix_rebuilds << " matrix builds, "
+          << step_controller.n_total_cuts() << " step cuts, "
+          << n_matrix_rebuilds << " matrix builds, "
           << linear_solver->n_factorizations() << " factorizations, "
           << wall.wall_time() << " s wall time" << std::endl;
     timer.print_summary();

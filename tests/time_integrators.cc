@@ -15,6 +15,7 @@
 //    time, and the messages of its three limits.
 
 #include <deal.II/base/exceptions.h>
+
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <ndda/time/dda.h>
@@ -24,9 +25,9 @@
 
 #include <cmath>
 #include <functional>
-#include <sstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "tests.h"
 
@@ -107,8 +108,9 @@ namespace
                                         AnalysisType::quasi_static})
       for (const std::string scheme : {"DDA", "Newmark"})
         {
-          const auto integrator = create_time_integrator(
-            TimeIntegratorRegistry::create(scheme), analysis);
+          const auto integrator =
+            create_time_integrator(TimeIntegratorRegistry::create(scheme),
+                                   analysis);
           KinematicState state{one(3.), one(-4.)};
           Vector<double> rhs(1);
           integrator->add_inertia_terms(mass.matrix, state, dt, rhs);
@@ -135,7 +137,7 @@ namespace
               c_ref   = (scheme == "DDA" ? 2. : 4.) / (dt * dt);
               rhs_ref = (scheme == "DDA" ? 2. : 4.) / dt * m * 3. +
                         (scheme == "DDA" ? 0. : -4.);
-              v_ref   = 2 * d / dt - 3.;
+              v_ref = 2 * d / dt - 3.;
               if (scheme == "Newmark")
                 ma_ref = 4. / (dt * dt) * m * (d - dt * 3.) + 4.;
             }
@@ -170,8 +172,7 @@ namespace
   void
   test_oscillator()
   {
-    std::cout << "Oscillator, period 1 s, dt = 0.02 s, 10 periods"
-              << std::endl;
+    std::cout << "Oscillator, period 1 s, dt = 0.02 s, 10 periods" << std::endl;
     const double m = 1, k = 4 * M_PI * M_PI, dt = 0.02;
     const Scalar mass(m);
     for (const std::string scheme : {"Newmark", "DDA"})
@@ -181,7 +182,7 @@ namespace
                                  AnalysisType::dynamic_analysis);
         double         x = 1;
         KinematicState state{one(0.), one(-k * x)};
-        const unsigned n_steps = 500;
+        const unsigned n_steps    = 500;
         double         x_previous = x, t_last_crossing = 0;
         for (unsigned int n = 1; n <= n_steps; ++n)
           {
@@ -238,7 +239,9 @@ namespace
                        "Shi.") != std::string::npos,
           "message for an unknown scheme");
     const std::string twice = message_of([]() {
-      TimeIntegratorRegistry::add("DDA", "again", &DDA::declare_parameters,
+      TimeIntegratorRegistry::add("DDA",
+                                  "again",
+                                  &DDA::declare_parameters,
                                   nullptr);
     });
     std::cout << "  registered twice: " << twice << std::endl;
@@ -276,8 +279,7 @@ end
               << parameters.control.time_integrator->mass_coefficient(0.1)
               << std::endl;
     check(parameters.control.time_integrator_name == "Shi" &&
-            std::abs(parameters.control.time_integrator->mass_coefficient(
-                       0.1) -
+            std::abs(parameters.control.time_integrator->mass_coefficient(0.1) -
                      200.) < 1e-10,
           "a scene with the program's scheme");
   }
@@ -298,13 +300,13 @@ end
     controller.begin_step(1, t);
     double dt = controller.attempt_size(t);
     dt        = controller.after_failure(AttemptResult::too_large, dt, 1.);
-    dt = controller.after_failure(AttemptResult::penalty_raised, dt, 1.);
-    dt = controller.after_failure(AttemptResult::not_settled, dt, 1.);
+    dt        = controller.after_failure(AttemptResult::penalty_raised, dt, 1.);
+    dt        = controller.after_failure(AttemptResult::not_settled, dt, 1.);
     controller.accept(dt);
     t += dt;
     std::cout << "  step 1: " << dt << " s after " << controller.n_cuts()
-              << " cuts (" << controller.n_open_close_cuts()
-              << " open-close)" << std::endl;
+              << " cuts (" << controller.n_open_close_cuts() << " open-close)"
+              << std::endl;
     check(dt == 0.025 && controller.n_cuts() == 2 &&
             controller.n_open_close_cuts() == 1,
           "cuts halve the step, a penalty raise does not");
@@ -349,7 +351,7 @@ end
             std::string::npos,
           "message of the raise limit");
 
-    StepController crawling(limits);
+    StepController    crawling(limits);
     const std::string crawl = message_of([&]() {
       for (unsigned int step = 1;; ++step)
         {
@@ -360,8 +362,7 @@ end
     });
     std::cout << "  crawling: " << crawl << std::endl;
     check(crawl.find("Step 1000 at t = ") != std::string::npos &&
-            crawl.find(": 1000 steps in a row were cut") !=
-            std::string::npos,
+            crawl.find(": 1000 steps in a row were cut") != std::string::npos,
           "message of the crawl guard");
   }
 } // namespace

@@ -526,9 +526,9 @@ namespace ndda
     Contact::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Contact");
-      law_name       = prm.get("Contact law");
-      law = contact::ContactLawRegistry::create_and_parse(law_name, prm);
-      enabled        = prm.get_bool("Enable");
+      law_name = prm.get("Contact law");
+      law      = contact::ContactLawRegistry::create_and_parse(law_name, prm);
+      enabled  = prm.get_bool("Enable");
       penalty_method = prm.get("Penalty") == "fixed" ? PenaltyMethod::fixed :
                                                        PenaltyMethod::automatic;
       penalty_factor = prm.get_double("Penalty factor");

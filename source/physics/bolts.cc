@@ -5,7 +5,8 @@
 namespace ndda
 {
   void
-  BoltSprings::setup(const parameters::Bolts &parameters, const NodeLocator &nodes)
+  BoltSprings::setup(const parameters::Bolts &parameters,
+                     const NodeLocator       &nodes)
   {
     bolts.clear();
     for (const auto &b : parameters.bolts)
@@ -55,7 +56,7 @@ namespace ndda
 
   void
   BoltSprings::add_stiffness(const Vector<double>         &displacement,
-                       dealii::SparseMatrix<double> &matrix) const
+                             dealii::SparseMatrix<double> &matrix) const
   {
     // Thesis 3.6: k_b L L^T with L the unit vector between the anchors on
     // the current geometry.
@@ -76,7 +77,7 @@ namespace ndda
 
   void
   BoltSprings::add_internal_force(const Vector<double> &displacement,
-                            Vector<double>       &force) const
+                                  Vector<double>       &force) const
   {
     for (const auto &bolt : bolts)
       {
@@ -93,7 +94,7 @@ namespace ndda
 
   void
   BoltSprings::add_pretension(const Vector<double> &displacement,
-                        Vector<double>       &force) const
+                              Vector<double>       &force) const
   {
     for (const auto &bolt : bolts)
       if (bolt.pretension != 0.)
@@ -110,7 +111,8 @@ namespace ndda
 
 
   void
-  BoltSprings::update(const Vector<double> &displacement, const Vector<double> &d)
+  BoltSprings::update(const Vector<double> &displacement,
+                      const Vector<double> &d)
   {
     for (auto &bolt : bolts)
       {

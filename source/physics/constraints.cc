@@ -11,9 +11,9 @@ namespace ndda
 {
   using namespace dealii;
 
-  NodeLocator::NodeLocator(const CrackableMesh   &mesh,
-                           const DoFHandler<2>   &dof_handler,
-                           const Mapping<2>      &mapping)
+  NodeLocator::NodeLocator(const CrackableMesh &mesh,
+                           const DoFHandler<2> &dof_handler,
+                           const Mapping<2>    &mapping)
     : mesh(mesh)
   {
     // Which two dofs belong to the same node: per dof of component 0 the
@@ -123,10 +123,11 @@ namespace ndda
         if (bc.type != parameters::ConstraintType::fixed)
           {
             function = functions.size();
-            functions.push_back(make_function(
-              bc.value,
-              bc.type == parameters::ConstraintType::roller ? 1 : 2,
-              true));
+            functions.push_back(
+              make_function(bc.value,
+                            bc.type == parameters::ConstraintType::roller ? 1 :
+                                                                            2,
+                            true));
           }
         const double angle = bc.roller_angle * numbers::PI / 180.;
         Tensor<1, 2> normal;
@@ -282,10 +283,9 @@ namespace ndda
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int j = 0; j < 2; ++j)
           {
-            const double kij =
-              nc.type == parameters::ConstraintType::roller ?
-                k * nc.normal[i] * nc.normal[j] :
-                (i == j ? k : 0.);
+            const double kij = nc.type == parameters::ConstraintType::roller ?
+                                 k * nc.normal[i] * nc.normal[j] :
+                                 (i == j ? k : 0.);
             if (kij != 0.)
               matrix.add(nc.dofs[i], nc.dofs[j], kij);
           }

@@ -307,7 +307,7 @@ namespace ndda
 
 
   LinearSolver::LinearSolver(const parameters::LinearSolverType type,
-                             const double                   tolerance)
+                             const double                       tolerance)
     : type(type)
     , tolerance(tolerance)
     , implementation(std::make_unique<Implementation>())

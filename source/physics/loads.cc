@@ -23,11 +23,11 @@ namespace ndda
 
 
   PointEvaluator
-  make_point_evaluator(const CrackableMesh     &mesh,
+  make_point_evaluator(const CrackableMesh    &mesh,
                        const FiniteElement<2> &fe,
-                       const DofMap            &dof_map,
-                       const Point<2>          &p,
-                       const std::string       &entry)
+                       const DofMap           &dof_map,
+                       const Point<2>         &p,
+                       const std::string      &entry)
   {
     // deal.II 9.4's find_active_cell_around_point() can return a cell of
     // another block on meshes of disconnected blocks; locate by
@@ -113,13 +113,13 @@ namespace ndda
 
 
   void
-  ExternalLoads::update_faces(const DoFHandler<2>   &dof_handler,
-                              const Mapping<2>      &mapping,
-                              const Quadrature<1>   &face_quadrature,
-                              const double           thickness)
+  ExternalLoads::update_faces(const DoFHandler<2> &dof_handler,
+                              const Mapping<2>    &mapping,
+                              const Quadrature<1> &face_quadrature,
+                              const double         thickness)
   {
-    const auto       &fe = dof_handler.get_fe();
-    FEFaceValues<2>   fe_face_values(mapping,
+    const auto     &fe = dof_handler.get_fe();
+    FEFaceValues<2> fe_face_values(mapping,
                                    fe,
                                    face_quadrature,
                                    update_values | update_JxW_values |

@@ -94,9 +94,9 @@ namespace ndda
         const auto principal = [&](const unsigned int c, const double sign) {
           const auto   s    = simulator.mean_cell_stress(c);
           const double mean = 0.5 * (s[0][0] + s[1][1]);
-          const double r    = std::sqrt(0.25 * (s[0][0] - s[1][1]) *
-                                       (s[0][0] - s[1][1]) +
-                                     s[0][1] * s[0][1]);
+          const double r =
+            std::sqrt(0.25 * (s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
+                      s[0][1] * s[0][1]);
           return mean + sign * r;
         };
         const auto component = [&](const unsigned int i, const unsigned int j) {
@@ -132,7 +132,8 @@ namespace ndda
           return mesh.block_of_cell(c);
         });
         std::vector<unsigned int> material;
-        for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+        for (const auto &cell :
+             mesh.get_triangulation().active_cell_iterators())
           material.push_back(cell->material_id());
         add_cell_field(simulator,
                        frame,

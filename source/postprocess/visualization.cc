@@ -22,10 +22,7 @@ namespace ndda
     {
       const auto &output = simulator.get_parameters().output;
       DataOut<2>  data_out;
-      Frame       frame(data_out,
-                  output_number,
-                  output.write_vtu,
-                  output.directory);
+      Frame frame(data_out, output_number, output.write_vtu, output.directory);
       data_out.attach_dof_handler(simulator.get_dof_handler());
       for (const auto &postprocessor : postprocessors)
         postprocessor->add_fields(simulator, frame);

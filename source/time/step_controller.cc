@@ -38,8 +38,8 @@ namespace ndda
     std::string
     StepController::where() const
     {
-      return "Step " + std::to_string(step) + " at t = " +
-             to_string(start_time) + ": ";
+      return "Step " + std::to_string(step) +
+             " at t = " + to_string(start_time) + ": ";
     }
 
 
@@ -105,15 +105,15 @@ namespace ndda
       const double next = 0.5 * dt;
       // Steps that each need a cut shrink the step without bound when the
       // motion diverges: stop rather than crawl.
-      AssertThrow(
-        next >= smallest_step * limits.nominal_step,
-        ExcMessage(where() +
-                   "the step size fell below 1e-6 of Control/Time step "
-                   "after cuts in step after step; the motion is "
-                   "diverging (largest increment " +
-                   to_string(max_increment) +
-                   " m). Look at the last output and the statistics "
-                   "file; see doc/contact.md, 'Known limits'."));
+      AssertThrow(next >= smallest_step * limits.nominal_step,
+                  ExcMessage(
+                    where() +
+                    "the step size fell below 1e-6 of Control/Time step "
+                    "after cuts in step after step; the motion is "
+                    "diverging (largest increment " +
+                    to_string(max_increment) +
+                    " m). Look at the last output and the statistics "
+                    "file; see doc/contact.md, 'Known limits'."));
       return next;
     }
 
