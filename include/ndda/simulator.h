@@ -22,7 +22,10 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <ndda/base/log_file.h>
 #include <ndda/contact/contact_handler.h>
+#include <ndda/contact/open_close_solver.h>
+#include <ndda/fracture/edge_failure_check.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/bolts.h>
@@ -30,31 +33,24 @@
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/finite_element.h>
-#include <ndda/physics/linear_solver.h>
+#include <ndda/physics/linear_system.h>
 #include <ndda/physics/loads.h>
+#include <ndda/physics/stress_field.h>
+#include <ndda/postprocess/measure_points.h>
+#include <ndda/postprocess/progress_report.h>
 #include <ndda/postprocess/visualization.h>
 #include <ndda/time/step_controller.h>
 #include <ndda/time/time_integrator.h>
 
 #include <fstream>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
 namespace ndda
 {
   using namespace dealii;
-
-  /**
-   * One value of a measure point at one time.
-   */
-  struct MeasureSample
-  {
-    double                time;
-    Tensor<1, 2>          displacement;
-    Tensor<1, 2>          velocity;
-    SymmetricTensor<2, 2> stress;
-  };
 
   /**
    * The ndda engine: reads a scene, builds the mesh and the finite element
@@ -177,18 +173,21 @@ namespace ndda
     const std::vector<SymmetricTensor<2, dim>> &
     get_cell_stress(const unsigned int cell) const
     {
-      return stress[cell];
+      return stresses[cell];
     }
 
     /** Area-weighted mean stress of the active cell @p cell. */
     SymmetricTensor<2, dim>
-    mean_cell_stress(const unsigned int cell) const;
+    mean_cell_stress(const unsigned int cell) const
+    {
+      return stresses.mean(cell);
+    }
 
     /** The global mass matrix (kg, includes the thickness). */
     const SparseMatrix<double> &
     get_mass_matrix() const
     {
-      return mass_matrix;
+      return linear_system.get_mass_matrix();
     }
 
     /**
@@ -202,7 +201,7 @@ namespace ndda
     const std::vector<std::vector<MeasureSample>> &
     get_measure_histories() const
     {
-      return measure_histories;
+      return measure_points.get_histories();
     }
 
     /** Kinetic energy 1/2 v^T M v (J). */
@@ -220,7 +219,7 @@ namespace ndda
     unsigned int
     n_factorizations() const
     {
-      return linear_solver->n_factorizations();
+      return linear_system.n_factorizations();
     }
 
     /** Contacts of the scene: states, statistics of the last step. */
@@ -253,17 +252,12 @@ namespace ndda
      * Without fracturing materials, or before any edge fails, mode is
      * none.
      */
-    struct EdgeFailureRecord
-    {
-      fracture::FailureMode mode = fracture::FailureMode::none;
-      double                time = 0;
-      Point<dim>            location;
-    };
+    using EdgeFailureRecord = fracture::FailureRecord;
 
     const EdgeFailureRecord &
     get_first_edge_failure() const
     {
-      return first_edge_failure;
+      return fracture_check.first_failure();
     }
 
     /**
@@ -325,8 +319,6 @@ namespace ndda
     /** @} */
 
   private:
-    void
-    make_mesh(const Triangulation<dim> *triangulation);
     /**
      * Distribute the dofs and build the index caches and state vectors;
      * with @p element_matrices also every cell's element matrices on the
@@ -335,55 +327,24 @@ namespace ndda
      */
     void
     setup_dofs(const bool element_matrices = true);
+    /** Constraints, bolts and the sparsity pattern of the linear system. */
     void
     setup_constraints();
     void
     setup_loads();
+    /** The contacts of the present mesh. */
     void
-    setup_measure_points();
+    setup_contacts();
+    /** The element matrices of the cells that moved (all, if not
+     * @p only_moved_cells) and what depends on them. */
     void
     build_element_matrices(const bool only_moved_cells);
     void
     assemble_global_matrices();
-    void
-    assemble_system_matrix(const double dt);
-    void
-    factorize(const bool with_contacts);
-    void
-    setup_contacts();
-    void
-    update_sparsity_for_contacts();
-    /** Condense @p dsp, make it the sparsity pattern, and reinit every
-     * matrix on it (their entries are zero then). */
-    void
-    reinit_matrices(DynamicSparsityPattern &dsp);
-
-    /** Find the interior edges that may fracture (setup). */
-    void
-    setup_fracture();
-
-    /** Area-weighted mean of the stresses @p sigma at the quadrature
-     * points of @p cell. */
-    SymmetricTensor<2, dim>
-    mean_stress(const unsigned int                          cell,
-                const std::vector<SymmetricTensor<2, dim>> &sigma) const;
-
-    /** Area-weighted mean stress of every cell. */
-    std::vector<SymmetricTensor<2, dim>>
-    cell_mean_stresses() const;
-
-    /**
-     * Check the fracturable edges against the fracture criterion, from the
-     * step's start (the present state) to its trial end (the increment
-     * @p d, not committed); a step of length @p dt.
-     * Counts the failing edges and keeps the earliest failure of the run.
-     * Detection only: the edges are not split yet.
-     */
-    std::vector<std::array<unsigned int, 2>>
-    check_fracture(const Vector<double> &d, const double dt);
-
+    /** Internal force and strain energy of the present stresses. */
     void
     compute_internal_force();
+    /** M a0 = f_ext(0) - f_int, for Newmark. */
     void
     compute_initial_acceleration();
     /**
@@ -401,9 +362,25 @@ namespace ndda
      */
     double
     solve_step(Vector<double> &d);
-    /** One attempt of size @p dt: the open-close iteration. */
+    /** One attempt of size @p dt: the open-close iteration, then the
+     * checks of the increment @p d (check_increment()). */
     time::AttemptResult
     try_time_step(const double dt, Vector<double> &d);
+    /**
+     * Whether the settled increment @p d is accepted: not larger than the
+     * DDA step control allows, no cell turned inside out, no contact
+     * deeper than the penetration tolerance (else the penalty is raised).
+     */
+    time::AttemptResult
+    check_increment(const Vector<double> &d);
+    /**
+     * Check the fracturable edges against the fracture criterion, from the
+     * step's start (the present state) to its trial end (the increment
+     * @p d, not committed); a step of length @p dt. Returns the edges that
+     * crack now. Detection only: the edges are not split yet.
+     */
+    std::vector<std::array<unsigned int, 2>>
+    check_fracture(const Vector<double> &d, const double dt);
     /**
      * Accept the increment @p d of a step of length @p dt: contacts,
      * velocity and acceleration (by the integrator), stresses, bolts, work
@@ -415,29 +392,13 @@ namespace ndda
     void
     record_statistics(const double dt);
     /**
-     * The stresses of cell @p c at the end of a step with increment @p d:
-     * the start stresses turned by the cell's rotation in the increment
-     * (with Control/Rotate with spin), plus C eps(d). @p sigma holds the
-     * start stresses on entry.
+     * After a crack: constraints, bolts (with their axial forces
+     * @p bolt_forces), loads and measure points, found by position on the
+     * scene's initial geometry (the mesh moved back by the displacement
+     * and forward again).
      */
     void
-    advance_cell_stress(const unsigned int                    c,
-                        const Vector<double>                 &d,
-                        std::vector<SymmetricTensor<2, dim>> &sigma) const;
-    /** Rotation (rad) of cell @p c in the increment @p d, times its area,
-     * and its area. */
-    std::pair<double, double>
-    cell_rotation(const unsigned int c, const Vector<double> &d) const;
-    /**
-     * Turn the velocity and inertia force of each block relative to its
-     * centre of mass by the block's rotation in the increment @p d.
-     */
-    void
-    rotate_velocities(const Vector<double> &d);
-    void
-    move_mesh(const Vector<double> &d);
-    void
-    record_measure_points();
+    setup_on_initial_geometry(const std::vector<double> &bolt_forces);
     void
     output_results();
     void
@@ -448,11 +409,10 @@ namespace ndda
     std::unique_ptr<Triangulation<dim>> user_triangulation;
 
     /// Console output; also copied into the log file once the run starts.
-    std::ofstream                   log_file;
-    std::unique_ptr<std::streambuf> tee_buffer;
-    std::ostream                    console;
-    ConditionalOStream              pcout;
-    mutable TimerOutput             timer;
+    std::ostream        console;
+    LogFile             log_file;
+    ConditionalOStream  pcout;
+    mutable TimerOutput timer;
 
     CrackableMesh                        mesh;
     std::unique_ptr<FESystem<dim>>       fe;
@@ -462,37 +422,20 @@ namespace ndda
     DoFHandler<dim>                      dof_handler;
 
     ElementCache<dim> element_cache;
-
     /// The dofs as index arrays, for the loops of the time step.
     DofMap dof_map;
+    /// Material id of every active cell.
+    std::vector<unsigned int> cell_material;
 
     Constraints boundary_constraints;
     /// Stiffness of the penalty springs of Constraint method = penalty.
     double penalty_stiffness = 0;
 
-    /// Couplings of elements and bolts, before contacts and condensation.
-    SparsityPattern base_sparsity;
-    /// The (vertex, cell) contact couplings the sparsity pattern holds.
-    std::vector<std::pair<unsigned int, unsigned int>> pattern_couplings;
-    SparsityPattern                                    sparsity_pattern;
-    SparseMatrix<double>                               stiffness_matrix;
-    SparseMatrix<double>                               mass_matrix;
-    SparseMatrix<double>                               damping_matrix;
-    bool                                               has_damping = false;
-    SparseMatrix<double>                               system_matrix;
-    SparseMatrix<double>                               condensed_matrix;
-    std::unique_ptr<LinearSolver>                      linear_solver;
-    double                                             assembled_dt     = -1;
-    bool                                               matrices_changed = true;
-    /// The factorization is that of the system matrix without contacts.
-    bool base_factorized = false;
-    /// The last GMRES solve with an earlier factorization converged slowly:
-    /// factorize the next changed system.
-    bool refactorize_next = false;
-
-    contact::ContactHandler contacts;
-    double                  contact_threshold     = 0;
-    double                  penetration_tolerance = 0;
+    LinearSystem             linear_system;
+    contact::OpenCloseSolver open_close;
+    contact::ContactHandler  contacts;
+    double                   contact_threshold     = 0;
+    double                   penetration_tolerance = 0;
 
     Vector<double> displacement;
     /// Velocity and inertia force M a, carried by the time integrator.
@@ -508,40 +451,29 @@ namespace ndda
     double         load_work              = 0;
     double         initial_kinetic_energy = 0;
 
-    std::vector<std::vector<SymmetricTensor<2, dim>>> stress;
-
+    StressField   stresses;
     ExternalLoads loads;
     BoltSprings   bolts;
 
-    std::vector<PointEvaluator>             measure_points;
-    std::vector<std::vector<MeasureSample>> measure_histories;
+    postprocess::MeasurePoints measure_points;
 
     double               time        = 0;
     unsigned int         step_number = 0;
     time::StepController step_controller;
-    double       stored_strain_energy        = 0;
-    double       initial_strain_energy       = 0;
-    bool         initial_strain_energy_known = false;
-    /// Material id of every active cell.
-    std::vector<unsigned int> cell_material;
-    double                    scene_half_height      = 0;
-    unsigned int              last_solver_iterations = 0;
-    unsigned int              n_matrix_rebuilds      = 0;
-    double                    last_step_time         = 0;
-    double                    max_increment          = 0;
-    bool                      is_set_up              = false;
-    bool                      parameters_from_file   = false;
+    double               stored_strain_energy        = 0;
+    double               initial_strain_energy       = 0;
+    bool                 initial_strain_energy_known = false;
+    double               scene_half_height           = 0;
+    unsigned int         n_matrix_rebuilds           = 0;
+    double               last_step_time              = 0;
+    double               max_increment               = 0;
+    bool                 is_set_up                   = false;
+    bool                 parameters_from_file        = false;
 
-    /// Interior edges of the blocks whose material may fracture, and the
-    /// strength of each (the weaker of its two cells' materials).
-    std::vector<fracture::InteriorEdge> fracture_edges;
-    std::vector<fracture::Strength>     fracture_strength;
-    EdgeFailureRecord                   first_edge_failure;
-    bool                                fracture_enabled = false;
-    unsigned int                        n_failing_edges  = 0;
-    unsigned int                        n_crack_events   = 0;
-    unsigned int                        n_cracked_edges  = 0;
-    bool                                crack_limit_hit  = false;
+    fracture::EdgeFailureCheck fracture_check;
+    unsigned int               n_crack_events  = 0;
+    unsigned int               n_cracked_edges = 0;
+    bool                       crack_limit_hit = false;
 
     StepReport                       step_report;
     TableHandler                     statistics;

@@ -460,6 +460,30 @@ namespace ndda
 
 
 
+  bool
+  CrackableMesh::inverts_a_cell(
+    const std::vector<Tensor<1, 2>> &displacement) const
+  {
+    const auto twice_area = [](const std::array<Point<2>, 3> &p) {
+      return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
+             (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+    };
+    for (const auto &t : block_mesh.triangles)
+      {
+        std::array<Point<2>, 3> now, next;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            now[k]  = block_mesh.vertices[t[k]];
+            next[k] = now[k] + displacement[t[k]];
+          }
+        if (twice_area(now) * twice_area(next) <= 0)
+          return true;
+      }
+    return false;
+  }
+
+
+
   std::pair<Point<2>, Point<2>>
   CrackableMesh::bounding_box() const
   {

@@ -5,6 +5,7 @@
 
 #include <ndda/contact/contact_law.h>
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/constitutive_law.h>
 #include <ndda/physics/finite_element.h>
 
 #include <cmath>
@@ -667,6 +668,15 @@ namespace ndda
                         "plane stress",
                         Patterns::Selection("plane stress|plane strain"),
                         "Plane stress (thin plate) or plane strain.");
+      prm.declare_entry(
+        "Constitutive law",
+        "linear elasticity",
+        Patterns::Selection(ConstitutiveLawRegistry::joined_names()),
+        ConstitutiveLawRegistry::documentation(
+          "The stress-strain law of every material (a plugin, see "
+          "include/ndda/physics/constitutive_law.h; each reads its own "
+          "entries from the subsection of its name). The laws:"));
+      ConstitutiveLawRegistry::declare_parameters(prm);
       prm.declare_entry("Thickness",
                         "1",
                         Patterns::Double(0.),
@@ -709,6 +719,9 @@ namespace ndda
                                 const std::vector<std::string> &names)
     {
       prm.enter_subsection("Materials");
+      constitutive_law_name = prm.get("Constitutive law");
+      constitutive_law =
+        ConstitutiveLawRegistry::create_and_parse(constitutive_law_name, prm);
       plane_strain = prm.get("Plane condition") == "plane strain";
       thickness    = prm.get_double("Thickness");
       AssertThrow(thickness > 0.,

@@ -4,6 +4,9 @@
 
 #include <ndda/physics/dof_map.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace ndda
 {
   void
@@ -46,5 +49,29 @@ namespace ndda
               }
           }
       }
+  }
+
+
+
+  std::vector<dealii::Tensor<1, 2>>
+  DofMap::vertex_values(const dealii::Vector<double> &v) const
+  {
+    std::vector<dealii::Tensor<1, 2>> values(vertex_dofs.size());
+    for (unsigned int i = 0; i < vertex_dofs.size(); ++i)
+      for (unsigned int c = 0; c < 2; ++c)
+        values[i][c] = v[vertex_dofs[i][c]];
+    return values;
+  }
+
+
+
+  double
+  DofMap::max_vertex_norm(const dealii::Vector<double> &v) const
+  {
+    double max_square = 0;
+    for (const auto &dofs : vertex_dofs)
+      max_square =
+        std::max(max_square, v[dofs[0]] * v[dofs[0]] + v[dofs[1]] * v[dofs[1]]);
+    return std::sqrt(max_square);
   }
 } // namespace ndda

@@ -6,23 +6,60 @@
 
 namespace ndda
 {
-  template <int dim>
-  SymmetricTensor<4, dim>
-  elasticity_tensor(const double E, const double nu, const bool plane_strain)
+  namespace
   {
-    const double mu     = E / (2. * (1. + nu));
-    const double lambda = plane_strain ? E * nu / ((1. + nu) * (1. - 2. * nu)) :
-                                         E * nu / (1. - nu * nu);
-    SymmetricTensor<4, dim> C;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int l = 0; l < dim; ++l)
-            C[i][j][k][l] = (i == j && k == l ? lambda : 0.) +
-                            (i == k && j == l ? mu : 0.) +
-                            (i == l && j == k ? mu : 0.);
-    return C;
-  }
+    /**
+     * Whether @p cell moved by more than @p distance from @p vertices,
+     * measured relative to its centroid: a translation does not change the
+     * element matrices.
+     */
+    template <typename CellIterator, int dim>
+    bool
+    moved_beyond(const CellIterator            &cell,
+                 const std::vector<Point<dim>> &vertices,
+                 const double                   distance)
+    {
+      Tensor<1, dim> shift;
+      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+        shift += (cell->vertex(v) - vertices[v]) / cell->n_vertices();
+      double moved = 0;
+      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+        moved = std::max(moved, (cell->vertex(v) - vertices[v] - shift).norm());
+      return moved > distance;
+    }
+
+
+
+    /** Add rho t int N^T N (mass quadrature in @p values) to @p mass. */
+    template <int dim>
+    void
+    add_mass_matrix(const FEValues<dim> &values,
+                    const double         density_times_thickness,
+                    FullMatrix<double>  &mass)
+    {
+      const FEValuesExtractors::Vector u(0);
+      const unsigned int               n_dofs = mass.m();
+      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const Tensor<1, dim> phi_i = values[u].value(i, q);
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              mass(i, j) += density_times_thickness * values.JxW(q) *
+                            (phi_i * values[u].value(j, q));
+          }
+    }
+
+
+    /** The constitutive law of @p materials (linear elasticity if the
+     * materials were built without the parameter file). */
+    std::shared_ptr<const ConstitutiveLaw>
+    law_of(const parameters::Materials &materials)
+    {
+      if (materials.constitutive_law != nullptr)
+        return materials.constitutive_law;
+      return ConstitutiveLawRegistry::create("linear elasticity");
+    }
+  } // namespace
 
 
 
@@ -58,11 +95,10 @@ namespace ndda
         data.clear();
         data.resize(n_cells);
       }
-    elasticity.clear();
+    law = law_of(materials);
+    tangents.clear();
     for (const auto &material : materials.materials)
-      elasticity.push_back(elasticity_tensor<dim>(material.youngs_modulus,
-                                                  material.poissons_ratio,
-                                                  materials.plane_strain));
+      tangents.push_back(law->tangent(material, materials.plane_strain));
 
     FEValues<dim>                    fe_values(mapping,
                             fe,
@@ -80,27 +116,15 @@ namespace ndda
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         CellData &d = data[cell->active_cell_index()];
-        if (only_moved_cells && !d.vertices.empty())
-          {
-            // A translation does not change the element matrices: measure
-            // the motion relative to the cell's centroid.
-            Tensor<1, dim> shift;
-            for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-              shift += (cell->vertex(v) - d.vertices[v]) / cell->n_vertices();
-            double moved = 0;
-            for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-              moved =
-                std::max(moved,
-                         (cell->vertex(v) - d.vertices[v] - shift).norm());
-            if (moved <= tolerance * d.diameter)
-              continue;
-          }
+        if (only_moved_cells && !d.vertices.empty() &&
+            !moved_beyond(cell, d.vertices, tolerance * d.diameter))
+          continue;
         ++n_computed;
         computed_cells.push_back(cell->active_cell_index());
         fe_values.reinit(cell);
         mass_values.reinit(cell);
         const auto &material = materials.materials[cell->material_id()];
-        const auto &C        = elasticity[cell->material_id()];
+        const auto &C        = tangents[cell->material_id()];
 
         d.stiffness.reinit(n_dofs, n_dofs);
         d.mass.reinit(n_dofs, n_dofs);
@@ -136,14 +160,7 @@ namespace ndda
                     (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
               }
           }
-        for (unsigned int q = 0; q < mass_quadrature.size(); ++q)
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              const Tensor<1, dim> phi_i = mass_values[u].value(i, q);
-              for (unsigned int j = 0; j < n_dofs; ++j)
-                d.mass(i, j) += density * t * mass_values.JxW(q) *
-                                (phi_i * mass_values[u].value(j, q));
-            }
+        add_mass_matrix(mass_values, density * t, d.mass);
         d.vertices.resize(cell->n_vertices());
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)
           d.vertices[v] = cell->vertex(v);
@@ -154,7 +171,5 @@ namespace ndda
 
 
 
-  template SymmetricTensor<4, 2>
-  elasticity_tensor<2>(const double, const double, const bool);
   template class ElementCache<2>;
 } // namespace ndda

@@ -229,6 +229,13 @@ namespace ndda
     void
     move_vertices(const std::vector<Tensor<1, 2>> &displacement);
 
+    /**
+     * Whether moving the vertices by @p displacement would turn a cell
+     * inside out (or flat): the sign of its area changes.
+     */
+    bool
+    inverts_a_cell(const std::vector<Tensor<1, 2>> &displacement) const;
+
     /** Smallest and largest coordinates of all vertices. */
     std::pair<Point<2>, Point<2>>
     bounding_box() const;

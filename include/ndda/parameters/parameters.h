@@ -18,6 +18,8 @@ namespace ndda
 {
   using namespace dealii;
 
+  class ConstitutiveLaw;
+
   namespace contact
   {
     class ContactLaw;
@@ -64,16 +66,16 @@ namespace ndda
       /// parameters read, wrapped for a static analysis and replaced for a
       /// quasi-static one; stateless, so it may be shared.
       std::shared_ptr<const time::TimeIntegrator> time_integrator;
-      double           time_step;
-      double           end_time;
-      double           max_displacement_ratio;
-      unsigned int     max_step_cuts;
-      LinearSolverType linear_solver;
-      double           solver_tolerance;
-      ConstraintMethod constraint_method;
-      double           penalty_factor;
-      double           matrix_update_tolerance;
-      bool             rotate_with_spin;
+      double                                      time_step;
+      double                                      end_time;
+      double                                      max_displacement_ratio;
+      unsigned int                                max_step_cuts;
+      LinearSolverType                            linear_solver;
+      double                                      solver_tolerance;
+      ConstraintMethod                            constraint_method;
+      double                                      penalty_factor;
+      double                                      matrix_update_tolerance;
+      bool                                        rotate_with_spin;
 
       /// The scalar element by name, as make_element() takes it
       /// (physics/finite_element.h): Finite element, or else
@@ -123,7 +125,7 @@ namespace ndda
       double             max_penetration_ratio;
       /// The contact law's name, `set Contact law = ...`, and the law with
       /// its parameters read (contact/contact_law.h); stateless, shared.
-      std::string                               law_name;
+      std::string                                law_name;
       std::shared_ptr<const contact::ContactLaw> law;
 
       static void
@@ -167,10 +169,15 @@ namespace ndda
     /** subsection Materials */
     struct Materials
     {
-      bool                  plane_strain;
-      double                thickness;
-      std::vector<Material> materials;
-      JointMaterial         joint;
+      /// The constitutive law, `set Constitutive law = ...`, with its
+      /// parameters read. Empty in materials not read from a parameter
+      /// file: the element cache then uses "linear elasticity".
+      std::string                            constitutive_law_name;
+      std::shared_ptr<const ConstitutiveLaw> constitutive_law;
+      bool                                   plane_strain;
+      double                                 thickness;
+      std::vector<Material>                  materials;
+      JointMaterial                          joint;
 
       /** Index of the material called @p name; throws naming @p entry. */
       unsigned int
@@ -336,16 +343,16 @@ namespace ndda
      */
     struct Parameters
     {
-      std::string          scene_name;
-      Control              control;
-      Contact              contact;
-      Materials            materials;
-      Geometry             geometry;
-      Loads                loads;
-      BoundaryConditions   boundary_conditions;
-      Bolts                bolts;
-      Output               output;
-      fracture::Parameters fracture;
+      std::string             scene_name;
+      Control                 control;
+      Contact                 contact;
+      Materials               materials;
+      Geometry                geometry;
+      Loads                   loads;
+      BoundaryConditions      boundary_conditions;
+      Bolts                   bolts;
+      Output                  output;
+      fracture::Parameters    fracture;
       postprocess::Parameters postprocess;
 
       /** The name lists that decide which subsections exist. */

@@ -2,9 +2,12 @@
 #ifndef ndda_physics_dof_map_h
 #define ndda_physics_dof_map_h
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/vector.h>
 
 #include <array>
 #include <vector>
@@ -56,6 +59,14 @@ namespace ndda
     std::vector<std::array<index, 2>> node_dofs;
     /// Node of every dof.
     std::vector<unsigned int> dof_to_node;
+
+    /** The (x, y) values of the dof vector @p v at every vertex. */
+    std::vector<dealii::Tensor<1, 2>>
+    vertex_values(const dealii::Vector<double> &v) const;
+
+    /** The largest length of the vectors of @p v at the vertices. */
+    double
+    max_vertex_norm(const dealii::Vector<double> &v) const;
   };
 } // namespace ndda
 

@@ -14,6 +14,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/constitutive_law.h>
 
 #include <vector>
 
@@ -22,23 +23,12 @@ namespace ndda
   using namespace dealii;
 
   /**
-   * Isotropic linear elasticity tensor for plane stress or plane strain
-   * (thesis eqs. 3.20, 3.21):
-   * sigma = lambda tr(eps) I + 2 mu eps, with lambda = E nu / (1 - nu^2)
-   * for plane stress and E nu / ((1 + nu)(1 - 2 nu)) for plane strain.
-   */
-  template <int dim>
-  SymmetricTensor<4, dim>
-  elasticity_tensor(const double youngs_modulus,
-                    const double poissons_ratio,
-                    const bool   plane_strain);
-
-  /**
    * Element matrices and operators of every cell, computed on the geometry
    * of the moment they were built and kept until the cell has moved too
    * much (DESIGN.md decision 4). For each cell:
    *
-   * - stiffness: t * int B^T C B (thesis 3.24),
+   * - stiffness: t * int B^T C B (thesis 3.24), C the tangent of the
+   *   scene's constitutive law (Materials::constitutive_law),
    * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
    *   time-step factor), with rho scaled to keep the cell's initial mass,
    * - at every point of the element's cell quadrature (QGaussSimplex(p),
@@ -105,11 +95,18 @@ namespace ndda
       return data[cell];
     }
 
-    /** Elasticity tensor of every material, by material id. */
-    const std::vector<SymmetricTensor<4, dim>> &
-    get_elasticity() const
+    /** The constitutive law of the last update(). */
+    const ConstitutiveLaw &
+    get_constitutive_law() const
     {
-      return elasticity;
+      return *law;
+    }
+
+    /** The law's tangent of every material, by material id. */
+    const std::vector<SymmetricTensor<4, dim>> &
+    get_tangents() const
+    {
+      return tangents;
     }
 
     unsigned int
@@ -126,12 +123,13 @@ namespace ndda
     }
 
   private:
-    std::vector<CellData>                data;
-    std::vector<SymmetricTensor<4, dim>> elasticity;
-    std::vector<unsigned int>            computed_cells;
-    Quadrature<dim>                      quadrature;
-    Quadrature<dim>                      mass_quadrature;
-    unsigned int                         n_q_points = 0;
+    std::vector<CellData>                  data;
+    std::shared_ptr<const ConstitutiveLaw> law;
+    std::vector<SymmetricTensor<4, dim>>   tangents;
+    std::vector<unsigned int>              computed_cells;
+    Quadrature<dim>                        quadrature;
+    Quadrature<dim>                        mass_quadrature;
+    unsigned int                           n_q_points = 0;
   };
 } // namespace ndda
 

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_physics_constitutive_law_h
+#define ndda_physics_constitutive_law_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <ndda/base/plugin_registry.h>
+#include <ndda/parameters/parameters.h>
+
+#include <memory>
+
+namespace ndda
+{
+  using dealii::SymmetricTensor;
+
+  /**
+   * Interface of a constitutive law (as the material models of step-42):
+   * the tangent d sigma / d eps, and the stress update at a quadrature
+   * point over a step's strain increment. ndda's stresses are updated
+   * incrementally: at the end of a step, every quadrature point's stress
+   * is its start stress (turned with the cell's spin, see doc/theory.md)
+   * updated by update_stress() with the strain increment of the step's
+   * displacement increment d.
+   *
+   * The tangent is asked once per material when element matrices are
+   * (re)built; the element stiffness is t int B^T C B with it (thesis
+   * 3.24). A law whose tangent depends on the stress state (plasticity,
+   * damage) needs element matrices per quadrature point state, which the
+   * element cache does not have yet: such a law gives its elastic tangent
+   * here, and the open-close iteration then solves with it (a modified
+   * Newton step per time step).
+   *
+   * A law is a plugin (NDDA_REGISTER_PLUGIN with this interface):
+   * `set Constitutive law = name` in `subsection Materials` selects it, and
+   * its own entries live in `subsection Materials / subsection <name>`.
+   * It reads the elastic constants of each material from
+   * parameters::Material (Young's modulus, Poisson's ratio), and
+   * whatever else it needs from its own entries.
+   *
+   * @ingroup physics
+   */
+  class ConstitutiveLaw
+  {
+  public:
+    virtual ~ConstitutiveLaw() = default;
+
+    /** Declare the law's parameters (its subsection is entered). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** Read the law's parameters (its subsection is entered). */
+    virtual void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * The tangent C = d sigma / d eps of @p material, in plane strain or
+     * plane stress (@p plane_strain).
+     */
+    virtual SymmetricTensor<4, 2>
+    tangent(const parameters::Material &material,
+            const bool                  plane_strain) const = 0;
+
+    /**
+     * Update @p stress, the stress at the start of the step (turned with
+     * the spin), by the strain increment @p strain_increment of the step.
+     * @p tangent is tangent() of @p material. The default is the linear
+     * update stress += tangent : strain_increment.
+     */
+    virtual void
+    update_stress(const parameters::Material  &material,
+                  const SymmetricTensor<4, 2> &tangent,
+                  const SymmetricTensor<2, 2> &strain_increment,
+                  SymmetricTensor<2, 2>       &stress) const;
+
+    /**
+     * The elastic energy per unit volume that @p stress stores (J/m^3),
+     * for the strain energy of the statistics and the energy balance.
+     * The default is that of a linear law with @p tangent:
+     * stress : tangent^-1 : stress / 2.
+     */
+    virtual double
+    energy_density(const parameters::Material  &material,
+                   const SymmetricTensor<4, 2> &tangent,
+                   const SymmetricTensor<2, 2> &stress) const;
+
+    static const char *
+    plugin_kind()
+    {
+      return "constitutive law";
+    }
+
+    static const char *
+    plugin_kinds()
+    {
+      return "constitutive laws";
+    }
+
+    static const char *
+    selection_entry()
+    {
+      return "Materials/Constitutive law";
+    }
+
+    /** Keep the built-in laws in every program. */
+    static void
+    link_builtin_plugins();
+  };
+
+  /** The registry of constitutive laws. */
+  using ConstitutiveLawRegistry = PluginRegistry<ConstitutiveLaw>;
+
+  /**
+   * Isotropic linear elasticity tensor for plane stress or plane strain
+   * (thesis eqs. 3.20, 3.21):
+   * sigma = lambda tr(eps) I + 2 mu eps, with lambda = E nu / (1 - nu^2)
+   * for plane stress and E nu / ((1 + nu)(1 - 2 nu)) for plane strain.
+   */
+  SymmetricTensor<4, 2>
+  isotropic_elasticity_tensor(const double youngs_modulus,
+                              const double poissons_ratio,
+                              const bool   plane_strain);
+} // namespace ndda
+
+#endif

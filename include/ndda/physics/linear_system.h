@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_physics_linear_system_h
+#define ndda_physics_linear_system_h
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <ndda/physics/bolts.h>
+#include <ndda/physics/constraints.h>
+#include <ndda/physics/dof_map.h>
+#include <ndda/physics/element_cache.h>
+#include <ndda/physics/linear_solver.h>
+
+#include <functional>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace ndda
+{
+  /**
+   * The global matrices of a scene and the linear solves of its time steps
+   * (thesis 3.11): the stiffness K, mass M and damping C assembled from the
+   * element cache and the bolts; the step's system matrix
+   * A = K + c_M M + c_C C (+ the penalty springs of the constraints); the
+   * sparsity pattern, which also holds the couplings of the contacts; the
+   * linear solver and the reuse of its factorization.
+   *
+   * A factorization of A without contact springs is kept for as long as
+   * the geometry and the step size stay (DESIGN.md decision 4). A system
+   * whose contact springs changed is first solved by GMRES preconditioned
+   * with the last factorization (see LinearSolver); when that converges
+   * slowly, the next changed system is factorized.
+   *
+   * @ingroup physics
+   */
+  class LinearSystem
+  {
+  public:
+    /** Adds springs (the contacts') to a matrix and a right-hand side. */
+    using SpringAssembler =
+      std::function<void(SparseMatrix<double> &, Vector<double> &)>;
+
+    /**
+     * A new linear solver of type @p type; with @p timer, the assembly and
+     * the solves are timed in it.
+     */
+    void
+    initialize(const parameters::LinearSolverType type,
+               const double                       tolerance,
+               TimerOutput                       *timer = nullptr);
+
+    LinearSolver &
+    get_linear_solver()
+    {
+      return *linear_solver;
+    }
+
+    /**
+     * Make the sparsity pattern from the couplings of the elements and
+     * bolts, @p element_couplings, condensed (in place) with the
+     * constraints; every matrix is set to zero on it. With
+     * @p with_contacts the element couplings are kept, to add the
+     * contacts' to them later.
+     */
+    void
+    reinit(DynamicSparsityPattern &element_couplings,
+           const Constraints      &constraints,
+           const bool              with_contacts);
+
+    /**
+     * Make sure the pattern holds every (vertex, cell) contact coupling
+     * of @p couplings (sorted): it holds them and those of earlier steps,
+     * and is rebuilt only when one is missing, so that candidates that
+     * come and go near the detection distance keep the symbolic analysis
+     * (UMFPACK) or pivot order (KLU) of the solver. When it holds more
+     * than twice the couplings in use, it is rebuilt with these only.
+     * Returns whether it was rebuilt: the matrices are then zero, and
+     * assemble() must be called.
+     */
+    bool
+    update_contact_couplings(
+      const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
+      const DofMap                                             &dof_map,
+      const Constraints                                        &constraints);
+
+    /**
+     * Assemble K, M and C from the element matrices of every cell and the
+     * bolt springs on the present @p displacement.
+     */
+    void
+    assemble(const ElementCache<2> &element_cache,
+             const DofMap          &dof_map,
+             const BoltSprings     &bolts,
+             const Vector<double>  &displacement);
+
+    /**
+     * Make the system matrix of a step of size @p dt, A = K + c_M M + c_C C
+     * (+ the penalty springs of the constraints of stiffness
+     * @p penalty_stiffness), unless it is that of the same size and the
+     * matrices did not change since.
+     */
+    void
+    prepare_step(const double       dt,
+                 const double       mass_coefficient,
+                 const double       damping_coefficient,
+                 const Constraints &constraints,
+                 const double       penalty_stiffness);
+
+    /**
+     * Solve (A + S) d = b + s under @p constraints, where @p add_springs
+     * (if not empty) adds the springs S, s; @p prescribed holds the
+     * prescribed increments of constrained dofs (exact constraints).
+     * A changed system is first solved by GMRES with the last
+     * factorization, at most @p reuse_iterations iterations (0: never).
+     * Returns the iterations of the solve: GMRES's with the earlier
+     * factorization, else the linear solver's (1 for a direct solver).
+     */
+    unsigned int
+    solve(const SpringAssembler &add_springs,
+          Vector<double>         b,
+          const Vector<double>  &prescribed,
+          const Constraints     &constraints,
+          const unsigned int     reuse_iterations,
+          Vector<double>        &d);
+
+    /**
+     * Solve M a = @p rhs with a = 0 at the constrained dofs (the initial
+     * acceleration of Newmark).
+     */
+    void
+    solve_mass(Vector<double>     rhs,
+               const Constraints &constraints,
+               Vector<double>    &acceleration) const;
+
+    /** Forget the step size and factorization (the dofs changed). */
+    void
+    invalidate();
+
+    const SparseMatrix<double> &
+    get_mass_matrix() const
+    {
+      return mass_matrix;
+    }
+
+    /** Whether any material has viscous damping. */
+    bool
+    has_damping() const
+    {
+      return damped;
+    }
+
+    unsigned int
+    n_factorizations() const
+    {
+      return linear_solver->n_factorizations();
+    }
+
+  private:
+    /** Condense @p dsp, make it the sparsity pattern, and reinit every
+     * matrix on it (their entries are zero then). */
+    void
+    reinit_matrices(DynamicSparsityPattern &dsp,
+                    const Constraints      &constraints);
+
+    TimerOutput *timer = nullptr;
+
+    /// Couplings of elements and bolts, before contacts and condensation.
+    SparsityPattern element_sparsity;
+    /// The (vertex, cell) contact couplings the sparsity pattern holds.
+    std::vector<std::pair<unsigned int, unsigned int>> pattern_couplings;
+    SparsityPattern                                    sparsity_pattern;
+    SparseMatrix<double>                               stiffness_matrix;
+    SparseMatrix<double>                               mass_matrix;
+    SparseMatrix<double>                               damping_matrix;
+    SparseMatrix<double>                               system_matrix;
+    /// The condensed system matrix with the contact springs of the solve.
+    SparseMatrix<double>          condensed_matrix;
+    std::unique_ptr<LinearSolver> linear_solver;
+    bool                          damped           = false;
+    double                        assembled_dt     = -1;
+    bool                          matrices_changed = true;
+    /// The factorization is that of the system matrix without contacts.
+    bool base_factorized = false;
+    /// The last GMRES solve with an earlier factorization converged slowly:
+    /// factorize the next changed system.
+    bool refactorize_next = false;
+  };
+} // namespace ndda
+
+#endif

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_postprocess_measure_points_h
+#define ndda_postprocess_measure_points_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/fe/fe.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ndda/mesh/crackable_mesh.h>
+#include <ndda/physics/dof_map.h>
+#include <ndda/physics/loads.h>
+#include <ndda/physics/stress_field.h>
+
+#include <string>
+#include <vector>
+
+namespace ndda
+{
+  /**
+   * One value of a measure point at one time.
+   */
+  struct MeasureSample
+  {
+    double                        time;
+    dealii::Tensor<1, 2>          displacement;
+    dealii::Tensor<1, 2>          velocity;
+    dealii::SymmetricTensor<2, 2> stress;
+  };
+
+  namespace postprocess
+  {
+    /**
+     * The measure points of a scene (Output/Measure points): material
+     * points whose displacement, velocity and cell stress are recorded
+     * after every step and written to measure_points.txt.
+     */
+    class MeasurePoints
+    {
+    public:
+      /**
+       * Locate @p points in @p mesh (on its present geometry; throws
+       * naming Output/Measure points for a point outside every block).
+       * With @p keep_histories (after a crack) the recorded samples stay.
+       */
+      void
+      setup(const CrackableMesh            &mesh,
+            const dealii::FiniteElement<2> &fe,
+            const DofMap                   &dof_map,
+            const std::vector<Point<2>>    &points,
+            const bool                      keep_histories);
+
+      /** Record a sample of every point at time @p time. */
+      void
+      record(const double                  time,
+             const dealii::Vector<double> &displacement,
+             const dealii::Vector<double> &velocity,
+             const StressField            &stresses);
+
+      /** Whether no sample has been recorded yet (and there are points). */
+      bool
+      waiting_for_first_sample() const
+      {
+        return !histories.empty() && histories[0].empty();
+      }
+
+      /** The samples, one vector per point. */
+      const std::vector<std::vector<MeasureSample>> &
+      get_histories() const
+      {
+        return histories;
+      }
+
+      /** Write every sample to the text file @p file_name. */
+      void
+      write(const std::string &file_name) const;
+
+    private:
+      std::vector<Point<2>>                   points;
+      std::vector<PointEvaluator>             evaluators;
+      std::vector<std::vector<MeasureSample>> histories;
+    };
+  } // namespace postprocess
+} // namespace ndda
+
+#endif

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <ndda/contact/open_close_solver.h>
+
+namespace ndda
+{
+  namespace contact
+  {
+    bool
+    OpenCloseSolver::solve(LinearSystem         &system,
+                           ContactHandler       *contacts,
+                           const Vector<double> &rhs,
+                           const Vector<double> &prescribed,
+                           const Constraints    &constraints,
+                           Vector<double>       &d,
+                           Vector<double>       &inertia_correction)
+    {
+      d.reinit(rhs.size());
+      const unsigned int max_iterations =
+        contacts != nullptr ? settings.max_iterations : 1;
+      const LinearSystem::SpringAssembler springs =
+        [contacts](SparseMatrix<double> &matrix, Vector<double> &b) {
+          contacts->assemble(matrix, b);
+        };
+      for (unsigned int iteration = 0; iteration < max_iterations; ++iteration)
+        {
+          Vector<double> b(rhs);
+          // Newmark averages the forces at the step's start and end. A
+          // contact that opens in this step would keep half of its start
+          // force for the whole step and hand the body the energy
+          // F0 g1 / 2 (g1 the gap it opens): only contacts closed at both
+          // ends enter the average (doc/contact.md).
+          inertia_correction.reinit(rhs.size());
+          if (contacts != nullptr && settings.average_contact_forces)
+            {
+              contacts->newmark_correction(inertia_correction);
+              b += inertia_correction;
+            }
+          const bool with_springs =
+            contacts != nullptr && contacts->has_springs();
+          solver_iterations =
+            system.solve(with_springs ? springs :
+                                        LinearSystem::SpringAssembler(),
+                         std::move(b),
+                         prescribed,
+                         constraints,
+                         contacts != nullptr ? settings.reuse_iterations : 0,
+                         d);
+          if (contacts == nullptr)
+            return true;
+          contacts->count_iteration();
+          if (!contacts->update_states(d))
+            return true;
+        }
+      return false;
+    }
+  } // namespace contact
+} // namespace ndda

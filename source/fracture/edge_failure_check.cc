@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <ndda/fracture/edge_failure_check.h>
+
+#include <algorithm>
+
+namespace ndda
+{
+  namespace fracture
+  {
+    void
+    EdgeFailureCheck::setup(
+      const CrackableMesh                        &mesh,
+      const std::vector<unsigned int>            &cell_material,
+      const std::vector<std::optional<Strength>> &material_strength)
+    {
+      edges.clear();
+      strength.clear();
+      any_material_fractures =
+        std::any_of(material_strength.begin(),
+                    material_strength.end(),
+                    [](const auto &s) { return s.has_value(); });
+      if (!any_material_fractures)
+        return;
+      const auto &block_mesh = mesh.get_block_mesh();
+      for (const auto &edge : find_interior_edges(block_mesh.triangles,
+                                                  block_mesh.vertices.size()))
+        {
+          if (mesh.is_cracked(edge.vertices[0], edge.vertices[1]))
+            continue; // a closed crack (both tips inside a block)
+          const auto &s0 = material_strength[cell_material[edge.cells[0]]];
+          const auto &s1 = material_strength[cell_material[edge.cells[1]]];
+          if (!s0 || !s1)
+            continue;
+          Strength s;
+          s.cohesion       = std::min(s0->cohesion, s1->cohesion);
+          s.friction_angle = std::min(s0->friction_angle, s1->friction_angle);
+          s.tensile_strength =
+            std::min(s0->tensile_strength, s1->tensile_strength);
+          edges.push_back(edge);
+          strength.push_back(s);
+        }
+    }
+
+
+
+    std::vector<std::array<unsigned int, 2>>
+    EdgeFailureCheck::check(
+      const Parameters                               &parameters,
+      const std::vector<std::array<unsigned int, 3>> &triangles,
+      const std::vector<double>                      &cell_area,
+      const BlockState                               &start,
+      const BlockState                               &end,
+      const double                                    time,
+      const double                                    dt)
+    {
+      const auto method       = parameters.edge_stress_method;
+      const auto start_states = edge_states(
+        edges, start.vertices, triangles, start.cell_stress, cell_area, method);
+      const auto end_states = edge_states(
+        edges, end.vertices, triangles, end.cell_stress, cell_area, method);
+      const bool first_record_done = first.mode != FailureMode::none;
+      n_failing                    = 0;
+      // The edges that fail, with their failure times (fractions of the
+      // step); the earliest ones, within the crack window, crack first.
+      std::vector<std::pair<double, unsigned int>> failing;
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        {
+          const EdgeFailure failure =
+            parameters.criterion->failure_in_step(start_states[e],
+                                                  end_states[e],
+                                                  strength[e]);
+          if (!failure.fails())
+            continue;
+          ++n_failing;
+          failing.emplace_back(failure.time, e);
+          const double t = time + failure.time * dt;
+          // The first check that finds failing edges keeps the earliest of
+          // them; the re-solves after a crack do not change the record (a
+          // crack can make another edge fail earlier within the same
+          // step).
+          if (!first_record_done &&
+              (first.mode == FailureMode::none || t < first.time))
+            {
+              const auto &v  = edges[e].vertices;
+              first.mode     = failure.mode;
+              first.time     = t;
+              first.location = dealii::Point<2>(
+                0.5 * (end.vertices[v[0]] + end.vertices[v[1]]));
+            }
+        }
+      std::vector<std::array<unsigned int, 2>> cracking;
+      if (failing.empty())
+        return cracking;
+      std::sort(failing.begin(), failing.end());
+      const double last =
+        failing.front().first + parameters.crack_window + 1e-12;
+      for (const auto &[t, e] : failing)
+        if (t <= last)
+          cracking.push_back(edges[e].vertices);
+      return cracking;
+    }
+  } // namespace fracture
+} // namespace ndda

@@ -1,0 +1,290 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <ndda/physics/linear_system.h>
+
+#include <algorithm>
+#include <iterator>
+#include <optional>
+
+namespace ndda
+{
+  namespace
+  {
+    /** A timer section, if there is a timer. */
+    std::optional<TimerOutput::Scope>
+    scope(TimerOutput *timer, const char *section)
+    {
+      if (timer == nullptr)
+        return std::nullopt;
+      return std::optional<TimerOutput::Scope>(std::in_place, *timer, section);
+    }
+  } // namespace
+
+
+
+  void
+  LinearSystem::initialize(const parameters::LinearSolverType type,
+                           const double                       tolerance,
+                           TimerOutput                       *timer)
+  {
+    this->timer   = timer;
+    linear_solver = std::make_unique<LinearSolver>(type, tolerance);
+  }
+
+
+
+  void
+  LinearSystem::reinit(DynamicSparsityPattern &element_couplings,
+                       const Constraints      &constraints,
+                       const bool              with_contacts)
+  {
+    if (with_contacts)
+      element_sparsity.copy_from(element_couplings);
+    reinit_matrices(element_couplings, constraints);
+    pattern_couplings.clear();
+  }
+
+
+
+  void
+  LinearSystem::reinit_matrices(DynamicSparsityPattern &dsp,
+                                const Constraints      &constraints)
+  {
+    constraints.affine_constraints().condense(dsp);
+    sparsity_pattern.copy_from(dsp);
+    stiffness_matrix.reinit(sparsity_pattern);
+    mass_matrix.reinit(sparsity_pattern);
+    damping_matrix.reinit(sparsity_pattern);
+    system_matrix.reinit(sparsity_pattern);
+    condensed_matrix.reinit(sparsity_pattern);
+  }
+
+
+
+  bool
+  LinearSystem::update_contact_couplings(
+    const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
+    const DofMap                                             &dof_map,
+    const Constraints                                        &constraints)
+  {
+    if (std::includes(pattern_couplings.begin(),
+                      pattern_couplings.end(),
+                      couplings.begin(),
+                      couplings.end()) &&
+        pattern_couplings.size() <= 2 * couplings.size() + 16)
+      return false;
+    std::vector<std::pair<unsigned int, unsigned int>> merged;
+    std::set_union(pattern_couplings.begin(),
+                   pattern_couplings.end(),
+                   couplings.begin(),
+                   couplings.end(),
+                   std::back_inserter(merged));
+    if (merged.size() > 2 * couplings.size() + 16)
+      merged = couplings;
+    const auto                           section = scope(timer, "sparsity");
+    DynamicSparsityPattern               dsp(element_sparsity.n_rows());
+    std::vector<types::global_dof_index> row;
+    for (types::global_dof_index i = 0; i < element_sparsity.n_rows(); ++i)
+      {
+        row.clear();
+        for (auto entry = element_sparsity.begin(i);
+             entry != element_sparsity.end(i);
+             ++entry)
+          row.push_back(entry->column());
+        dsp.add_entries(i, row.begin(), row.end());
+      }
+    for (const auto &[vertex, cell] : merged)
+      for (const auto i : dof_map.vertex_dofs[vertex])
+        for (unsigned int k = 0; k < dof_map.dofs_per_cell; ++k)
+          {
+            const auto j = dof_map.dofs_of_cell(cell)[k];
+            dsp.add(i, j);
+            dsp.add(j, i);
+          }
+    reinit_matrices(dsp, constraints);
+    pattern_couplings.swap(merged);
+    return true;
+  }
+
+
+
+  void
+  LinearSystem::assemble(const ElementCache<2> &element_cache,
+                         const DofMap          &dof_map,
+                         const BoltSprings     &bolts,
+                         const Vector<double>  &displacement)
+  {
+    stiffness_matrix                            = 0;
+    mass_matrix                                 = 0;
+    damping_matrix                              = 0;
+    damped                                      = false;
+    const unsigned int                   n_dofs = dof_map.dofs_per_cell;
+    std::vector<types::global_dof_index> dofs(n_dofs);
+    for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
+      {
+        const auto &data = element_cache[c];
+        std::copy(dof_map.dofs_of_cell(c),
+                  dof_map.dofs_of_cell(c) + n_dofs,
+                  dofs.begin());
+        stiffness_matrix.add(dofs, data.stiffness);
+        mass_matrix.add(dofs, data.mass);
+        if (data.viscosity_over_density > 0)
+          {
+            damped = true;
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              for (unsigned int j = 0; j < dofs.size(); ++j)
+                damping_matrix.add(dofs[i],
+                                   dofs[j],
+                                   data.viscosity_over_density *
+                                     data.mass(i, j));
+          }
+      }
+    bolts.add_stiffness(displacement, stiffness_matrix);
+    matrices_changed = true;
+  }
+
+
+
+  void
+  LinearSystem::prepare_step(const double       dt,
+                             const double       mass_coefficient,
+                             const double       damping_coefficient,
+                             const Constraints &constraints,
+                             const double       penalty_stiffness)
+  {
+    if (!matrices_changed && dt == assembled_dt)
+      return;
+    const auto section = scope(timer, "system matrix");
+    system_matrix.copy_from(stiffness_matrix);
+    if (mass_coefficient != 0.)
+      system_matrix.add(mass_coefficient, mass_matrix);
+    if (damped)
+      system_matrix.add(damping_coefficient, damping_matrix);
+    if (!constraints.exact())
+      constraints.add_penalty_springs(penalty_stiffness, system_matrix);
+    assembled_dt     = dt;
+    matrices_changed = false;
+    base_factorized  = false;
+  }
+
+
+
+  unsigned int
+  LinearSystem::solve(const SpringAssembler &add_springs,
+                      Vector<double>         b,
+                      const Vector<double>  &prescribed,
+                      const Constraints     &constraints,
+                      const unsigned int     reuse_iterations,
+                      Vector<double>        &d)
+  {
+    const bool springs = static_cast<bool>(add_springs);
+    // The condensed matrix is the system matrix with the springs, unless
+    // the factorization of the system matrix without springs serves.
+    const bool changed = springs || !base_factorized;
+    if (springs)
+      {
+        const auto section = scope(timer, "contact assembly");
+        condensed_matrix.copy_from(system_matrix);
+        add_springs(condensed_matrix, b);
+      }
+    else if (!base_factorized)
+      condensed_matrix.copy_from(system_matrix);
+
+    const auto  section = scope(timer, "solve");
+    const auto &affine  = constraints.affine_constraints();
+    if (constraints.exact())
+      {
+        // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies
+        // the homogeneous constraints.
+        if (!constraints.constrained_nodes().empty())
+          {
+            Vector<double> tmp(b.size());
+            (changed ? condensed_matrix : system_matrix).vmult(tmp, prescribed);
+            b -= tmp;
+          }
+        affine.condense(b);
+      }
+    unsigned int iterations = 0;
+    if (changed)
+      {
+        affine.condense(condensed_matrix);
+        // Only contact springs or the contact geometry differ from the
+        // last factorized system: try its factorization as GMRES
+        // preconditioner first, factorize if it does not serve.
+        iterations       = reuse_iterations > 0 && !refactorize_next ?
+                             linear_solver->solve_with_earlier_factorization(
+                         condensed_matrix, d, b, reuse_iterations, 1e-12) :
+                             0;
+        refactorize_next = false;
+        if (iterations == 0)
+          {
+            {
+              const auto factorize = scope(timer, "factorize");
+              linear_solver->factorize(condensed_matrix);
+            }
+            base_factorized = !springs;
+            iterations      = linear_solver->solve(d, b);
+          }
+        else if (2 * iterations > reuse_iterations)
+          // Converging slowly: the factorization has aged.
+          refactorize_next = true;
+      }
+    else
+      iterations = linear_solver->solve(d, b);
+    if (constraints.exact())
+      {
+        affine.distribute(d);
+        d += prescribed;
+      }
+    return iterations;
+  }
+
+
+
+  void
+  LinearSystem::solve_mass(Vector<double>     rhs,
+                           const Constraints &constraints,
+                           Vector<double>    &acceleration) const
+  {
+    SparseMatrix<double> m(sparsity_pattern);
+    m.copy_from(mass_matrix);
+    const auto &affine = constraints.affine_constraints();
+    if (!constraints.exact())
+      for (const auto &nc : constraints.constrained_nodes())
+        for (const auto dof : nc.dofs)
+          {
+            rhs[dof] = 0;
+            for (auto entry = m.begin(dof); entry != m.end(dof); ++entry)
+              entry->value() = (entry->column() == dof ? 1. : 0.);
+          }
+    affine.condense(m);
+    affine.condense(rhs);
+    // The consistent mass matrix is well conditioned (its condition number
+    // does not grow with refinement): Jacobi-preconditioned CG needs a few
+    // dozen iterations, far less than a factorization.
+    acceleration.reinit(rhs.size());
+    if (rhs.l2_norm() > 0)
+      {
+        SolverControl            control(1000, 1e-14 * rhs.l2_norm());
+        SolverCG<Vector<double>> cg(control);
+        PreconditionJacobi<SparseMatrix<double>> jacobi;
+        jacobi.initialize(m);
+        cg.solve(m, acceleration, rhs, jacobi);
+      }
+    affine.distribute(acceleration);
+  }
+
+
+
+  void
+  LinearSystem::invalidate()
+  {
+    assembled_dt     = -1;
+    base_factorized  = false;
+    refactorize_next = false;
+  }
+} // namespace ndda

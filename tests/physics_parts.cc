@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The parts of physics/ and contact/'s OpenCloseSolver without a simulator,
+// on a unit square of two P1 (and then P2) triangles:
+//
+//  - the constitutive law registry: "linear elasticity" by default, and a
+//    law this program registers ("scaled elasticity", with a parameter of
+//    its own), both selected by Materials/Constitutive law in a .prm text;
+//  - StressField: a uniaxial stretch gives sigma = C eps (plane stress);
+//    the strain energy is eps : C : eps / 2 times the area; the internal
+//    force is self-equilibrated and does the work 2 W on the stretch; an
+//    infinitesimal rotation by theta leaves the strain zero and turns an
+//    initial stress by theta (sigma <- R sigma R^T); the user's law doubles
+//    the stress of the stretch;
+//  - LinearSystem and OpenCloseSolver (no contacts: one solve): for the
+//    step matrix K + M / dt^2 and the right-hand side M t / dt^2 of a rigid
+//    translation t, the solve gives t back (K t = 0), and the mass solve
+//    M a = M g gives a = g.
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <ndda/contact/open_close_solver.h>
+#include <ndda/physics/constitutive_law.h>
+#include <ndda/physics/finite_element.h>
+#include <ndda/physics/linear_system.h>
+#include <ndda/physics/stress_field.h>
+
+#include <functional>
+
+#include "tests.h"
+
+using namespace dealii;
+using namespace ndda;
+using ndda_tests::check;
+
+/** Linear elasticity times a factor: a law defined by this program. */
+class ScaledElasticity : public ConstitutiveLaw
+{
+public:
+  static void
+  declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Factor",
+                      "1",
+                      Patterns::Double(0.),
+                      "The stiffness over that of linear elasticity.");
+  }
+
+  void
+  parse_parameters(ParameterHandler &prm) override
+  {
+    factor = prm.get_double("Factor");
+  }
+
+  SymmetricTensor<4, 2>
+  tangent(const parameters::Material &m, const bool plane_strain) const override
+  {
+    return factor * isotropic_elasticity_tensor(m.youngs_modulus,
+                                                m.poissons_ratio,
+                                                plane_strain);
+  }
+
+private:
+  double factor = 1;
+};
+
+NDDA_REGISTER_PLUGIN(ConstitutiveLaw,
+                     ScaledElasticity,
+                     "scaled elasticity",
+                     "Linear elasticity times Factor (a test law).")
+
+namespace
+{
+  const double E = 10e9, nu = 0.25, thickness = 0.5;
+
+  /** subsection Materials with one material 'rock' and @p law_lines. */
+  parameters::Materials
+  read_materials(const std::string &law_lines)
+  {
+    ParameterHandler               prm;
+    const std::vector<std::string> names = {"rock"};
+    parameters::Materials::declare_parameters(prm, names);
+    prm.parse_input_from_string("subsection Materials\n"
+                                "  set Names = rock\n"
+                                "  set Thickness = 0.5\n" +
+                                law_lines +
+                                "  subsection rock\n"
+                                "    set Density = 2000\n"
+                                "    set Young's modulus = 10e9\n"
+                                "    set Poisson's ratio = 0.25\n"
+                                "  end\n"
+                                "end\n");
+    parameters::Materials materials;
+    materials.parse_parameters(prm, names);
+    return materials;
+  }
+
+  /** The unit square as two triangles, with its space and its parts. */
+  struct Square
+  {
+    Square(const std::string &element_name, const parameters::Materials &m)
+      : materials(m)
+      , mapping(linear_mapping())
+    {
+      Triangulation<2> triangulation;
+      GridGenerator::subdivided_hyper_rectangle_with_simplices(triangulation,
+                                                               {1, 1},
+                                                               Point<2>(0, 0),
+                                                               Point<2>(1, 1));
+      mesh.build(triangulation);
+      element = std::make_unique<Element>(make_element(element_name));
+      dof_handler.reinit(mesh.get_triangulation());
+      dof_handler.distribute_dofs(*element->system);
+      dof_map.reinit(dof_handler);
+      cache.set_quadratures(element->cell_quadrature, element->mass_quadrature);
+      cache.update(dof_handler, mapping, materials, false, 0.);
+      cell_material.assign(mesh.get_triangulation().n_active_cells(), 0);
+      stresses.initialize(cache, dof_map, materials, cell_material, true);
+      stresses.reinit(cell_material.size(), cache.n_quadrature_points());
+      const NodeLocator nodes(mesh, dof_handler, mapping);
+      support_points = nodes.support_points;
+      component      = nodes.component;
+      constraints.setup(parameters::BoundaryConditions(),
+                        parameters::ConstraintMethod::exact,
+                        nodes);
+    }
+
+    ~Square()
+    {
+      dof_handler.clear();
+    }
+
+    /** The dof vector of the displacement field u(x). */
+    Vector<double>
+    interpolate(const std::function<Tensor<1, 2>(const Point<2> &)> &u) const
+    {
+      Vector<double> d(dof_handler.n_dofs());
+      for (unsigned int i = 0; i < d.size(); ++i)
+        d[i] = u(support_points[i])[component[i]];
+      return d;
+    }
+
+    parameters::Materials     materials;
+    MappingFE<2>              mapping;
+    CrackableMesh             mesh;
+    std::unique_ptr<Element>  element;
+    DoFHandler<2>             dof_handler;
+    DofMap                    dof_map;
+    ElementCache<2>           cache;
+    std::vector<unsigned int> cell_material;
+    StressField               stresses;
+    std::vector<Point<2>>     support_points;
+    std::vector<unsigned int> component;
+    Constraints               constraints;
+  };
+
+  /** The stretch u = (eps x, 0), its stresses, energy and force. */
+  void
+  check_stretch(const std::string &element_name,
+                const std::string &law_lines,
+                const double       factor)
+  {
+    Square       square(element_name, read_materials(law_lines));
+    const double eps = 1e-4;
+    const auto   d   = square.interpolate([&](const Point<2> &x) {
+      return Tensor<1, 2>({eps * x[0], 0.});
+    });
+    square.stresses.advance(d);
+    const double expected_xx = factor * E / (1 - nu * nu) * eps;
+    for (unsigned int c = 0; c < square.stresses.n_cells(); ++c)
+      for (const auto &sigma : square.stresses[c])
+        {
+          check(std::abs(sigma[0][0] - expected_xx) < 1e-9 * expected_xx,
+                "sigma_xx of the stretch");
+          check(std::abs(sigma[1][1] - nu * expected_xx) < 1e-9 * expected_xx,
+                "sigma_yy of the stretch");
+          check(std::abs(sigma[0][1]) < 1e-9 * expected_xx,
+                "sigma_xy of the stretch");
+        }
+    Vector<double> force(square.dof_handler.n_dofs());
+    const double   energy   = square.stresses.internal_force(force);
+    const double   expected = 0.5 * expected_xx * eps * thickness;
+    double         net_x = 0, net_y = 0;
+    for (unsigned int i = 0; i < force.size(); ++i)
+      (square.component[i] == 0 ? net_x : net_y) += force[i];
+    check(std::abs(energy - expected) < 1e-9 * expected, "strain energy");
+    check(std::abs(net_x) + std::abs(net_y) < 1e-9 * force.linfty_norm(),
+          "internal force self-equilibrated");
+    check(std::abs(force * d - 2 * energy) < 1e-9 * energy,
+          "work of the internal force");
+    std::cout << element_name << ", " << square.materials.constitutive_law_name
+              << ": sigma_xx = " << square.stresses.mean(0)[0][0]
+              << " Pa, strain energy = " << energy << " J" << std::endl;
+  }
+
+  /** An infinitesimal rotation turns an initial stress. */
+  void
+  check_rotation(const std::string &element_name)
+  {
+    Square       square(element_name, read_materials(""));
+    const double theta = 1e-3, s0 = 1e6;
+    for (unsigned int c = 0; c < square.stresses.n_cells(); ++c)
+      for (auto &sigma : square.stresses[c])
+        sigma[0][0] = s0;
+    const auto d = square.interpolate([&](const Point<2> &x) {
+      return Tensor<1, 2>({-theta * x[1], theta * x[0]});
+    });
+    square.stresses.advance(d);
+    const double c = std::cos(theta), s = std::sin(theta);
+    for (unsigned int cell = 0; cell < square.stresses.n_cells(); ++cell)
+      for (const auto &sigma : square.stresses[cell])
+        {
+          check(std::abs(sigma[0][0] - c * c * s0) < 1e-9 * s0,
+                "rotated sigma_xx");
+          check(std::abs(sigma[1][1] - s * s * s0) < 1e-9 * s0,
+                "rotated sigma_yy");
+          check(std::abs(sigma[0][1] - c * s * s0) < 1e-9 * s0,
+                "rotated sigma_xy");
+        }
+    std::cout << element_name << ": rotation by " << theta
+              << " rad, sigma_xy = " << square.stresses.mean(0)[0][1] << " Pa"
+              << std::endl;
+  }
+
+  /** A rigid translation through LinearSystem and OpenCloseSolver. */
+  void
+  check_solves(const std::string &element_name)
+  {
+    Square       square(element_name, read_materials(""));
+    BoltSprings  no_bolts;
+    LinearSystem system;
+    system.initialize(parameters::LinearSolverType::umfpack, 1e-12);
+    DynamicSparsityPattern dsp(square.dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(square.dof_handler, dsp);
+    system.reinit(dsp, square.constraints, false);
+    const Vector<double> zero(square.dof_handler.n_dofs());
+    system.assemble(square.cache, square.dof_map, no_bolts, zero);
+    const double dt = 1e-3;
+    system.prepare_step(dt, 1. / (dt * dt), 1. / dt, square.constraints, 0.);
+
+    const auto     t = square.interpolate([](const Point<2> &) {
+      return Tensor<1, 2>({0.3, -0.2});
+    });
+    Vector<double> rhs(t.size());
+    system.get_mass_matrix().vmult(rhs, t);
+    rhs /= dt * dt;
+    contact::OpenCloseSolver solver;
+    Vector<double>           d, correction;
+    check(solver.solve(system,
+                       nullptr,
+                       rhs,
+                       Vector<double>(t.size()),
+                       square.constraints,
+                       d,
+                       correction),
+          "a solve without contacts settles");
+    d -= t;
+    check(d.linfty_norm() < 1e-9 * t.linfty_norm(), "rigid translation");
+    check(correction.linfty_norm() == 0., "no inertia correction");
+
+    Vector<double> force(t.size()), a;
+    system.get_mass_matrix().vmult(force, t);
+    system.solve_mass(force, square.constraints, a);
+    a -= t;
+    check(a.linfty_norm() < 1e-9 * t.linfty_norm(), "mass solve");
+    std::cout << element_name << ": rigid translation and mass solve exact, "
+              << system.n_factorizations() << " factorization" << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto                       names = ConstitutiveLawRegistry::names();
+  check(std::find(names.begin(), names.end(), "linear elasticity") !=
+            names.end() &&
+          std::find(names.begin(), names.end(), "scaled elasticity") !=
+            names.end(),
+        "both laws registered");
+  for (const std::string element : {"FE_SimplexP(1)", "FE_SimplexP(2)"})
+    {
+      check_stretch(element, "", 1.);
+      check_stretch(element,
+                    "  set Constitutive law = scaled elasticity\n"
+                    "  subsection scaled elasticity\n"
+                    "    set Factor = 2\n"
+                    "  end\n",
+                    2.);
+      check_rotation(element);
+      check_solves(element);
+    }
+  return 0;
+}
