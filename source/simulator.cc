@@ -160,13 +160,8 @@ namespace ndda
   {
     if (!parameters.contact.enabled)
       return;
-    contact::DofAccess access;
-    access.fe            = fe.get();
-    access.cell_dofs     = &dof_map.cell_dofs;
-    access.component     = &dof_map.local_component;
-    access.vertex_dofs   = &dof_map.vertex_dofs;
     const auto distances = scene::setup_contacts(
-      parameters, mesh, cell_material, access, scene_half_height, contacts);
+      parameters, mesh, cell_material, dof_map, scene_half_height, contacts);
     contact_threshold     = distances.detection;
     penetration_tolerance = distances.penetration_tolerance;
   }

@@ -23,18 +23,18 @@ namespace ndda
     void
     ContactHandler::initialize(const std::vector<BoundaryEdge> &edges_in,
                                const std::vector<double>       &friction_in,
-                               const DofAccess                 &dofs_in,
+                               const DofMap                    &dofs_in,
                                const ContactSettings           &settings_in)
     {
       AssertDimension(edges_in.size(), friction_in.size());
       edges         = edges_in;
       edge_friction = friction_in;
-      dofs          = dofs_in;
+      dofs          = &dofs_in;
       settings      = settings_in;
       if (!settings.law)
         settings.law = create_contact_law(default_contact_law);
 
-      const unsigned int n_vertices = dofs.vertex_dofs->size();
+      const unsigned int n_vertices = dofs->vertex_dofs.size();
       edges_at_vertex.assign(n_vertices, {});
       vertex_friction.assign(n_vertices, std::numeric_limits<double>::max());
       for (unsigned int e = 0; e < edges.size(); ++e)
@@ -155,8 +155,8 @@ namespace ndda
             {
               // Thesis 6.5-6.12: a spring on the relative displacement of
               // the two vertices in this step, a hinge between them.
-              const auto &da = (*dofs.vertex_dofs)[c.vertex_a];
-              const auto &db = (*dofs.vertex_dofs)[c.vertex_b];
+              const auto &da = dofs->vertex_dofs[c.vertex_a];
+              const auto &db = dofs->vertex_dofs[c.vertex_b];
               for (unsigned int i = 0; i < 2; ++i)
                 {
                   matrix.add(da[i], da[i], kn);
@@ -400,13 +400,13 @@ namespace ndda
       memory[{c.vertex_a, c.vertex_b, invalid}] = {c.state, 0., 0, 0., false};
       Tensor<1, 2> u;
       for (unsigned int k = 0; k < 2; ++k)
-        u[k] = d[(*dofs.vertex_dofs)[c.vertex_a][k]] -
-               d[(*dofs.vertex_dofs)[c.vertex_b][k]];
+        u[k] = d[dofs->vertex_dofs[c.vertex_a][k]] -
+               d[dofs->vertex_dofs[c.vertex_b][k]];
       statistics.spring_energy += 0.5 * kn * u.norm_square();
       for (unsigned int k = 0; k < 2; ++k)
         {
-          end_force[(*dofs.vertex_dofs)[c.vertex_a][k]] -= kn * u[k];
-          end_force[(*dofs.vertex_dofs)[c.vertex_b][k]] += kn * u[k];
+          end_force[dofs->vertex_dofs[c.vertex_a][k]] -= kn * u[k];
+          end_force[dofs->vertex_dofs[c.vertex_b][k]] += kn * u[k];
         }
     }
 

@@ -76,23 +76,22 @@ namespace ndda
       const unsigned int k1      = (k0 + 1) % 3;
       const Point<2>     xi =
         unit_vertex[k0] + clamped * (unit_vertex[k1] - unit_vertex[k0]);
-      const unsigned int n_cell_dofs = dofs.fe->n_dofs_per_cell();
+      const unsigned int n_cell_dofs = dofs->dofs_per_cell;
 
       o.dofs.resize(2 + n_cell_dofs);
       o.wn.resize(2 + n_cell_dofs);
       o.wt.resize(2 + n_cell_dofs);
       for (unsigned int c = 0; c < 2; ++c)
         {
-          o.dofs[c] = (*dofs.vertex_dofs)[vertex][c];
+          o.dofs[c] = dofs->vertex_dofs[vertex][c];
           o.wn[c]   = o.normal[c];
           o.wt[c]   = o.tangent[c];
         }
-      const global_dof_index *cell_dofs =
-        dofs.cell_dofs->data() + std::size_t(e.cell) * n_cell_dofs;
+      const global_dof_index *cell_dofs = dofs->dofs_of_cell(e.cell);
       for (unsigned int i = 0; i < n_cell_dofs; ++i)
         {
-          const double       N = dofs.fe->shape_value(i, xi);
-          const unsigned int c = (*dofs.component)[i];
+          const double       N = dofs->fe->shape_value(i, xi);
+          const unsigned int c = dofs->local_component[i];
           o.dofs[2 + i]        = cell_dofs[i];
           o.wn[2 + i]          = -N * o.normal[c];
           o.wt[2 + i]          = -N * o.tangent[c];
@@ -106,10 +105,9 @@ namespace ndda
     ContactHandler::in_cell(const unsigned int vertex,
                             const unsigned int edge) const
     {
-      const unsigned int      n_cell_dofs = dofs.fe->n_dofs_per_cell();
-      const global_dof_index  dof         = (*dofs.vertex_dofs)[vertex][0];
-      const global_dof_index *cd =
-        dofs.cell_dofs->data() + std::size_t(edges[edge].cell) * n_cell_dofs;
+      const unsigned int      n_cell_dofs = dofs->dofs_per_cell;
+      const global_dof_index  dof         = dofs->vertex_dofs[vertex][0];
+      const global_dof_index *cd = dofs->dofs_of_cell(edges[edge].cell);
       return std::find(cd, cd + n_cell_dofs, dof) != cd + n_cell_dofs;
     }
 

@@ -102,8 +102,8 @@ namespace ndda
             o.vertex == c.vertex_a ? c.vertex_b : c.vertex_a;
           Tensor<1, 2> u;
           for (unsigned int k = 0; k < 2; ++k)
-            u[k] = d[(*dofs.vertex_dofs)[o.vertex][k]] -
-                   d[(*dofs.vertex_dofs)[corner][k]];
+            u[k] = d[dofs->vertex_dofs[o.vertex][k]] -
+                   d[dofs->vertex_dofs[corner][k]];
           if (u.norm() == 0.)
             return invalid;
           const Tensor<1, 2> r =

@@ -46,6 +46,125 @@ namespace ndda
       out << ")";
       return out.str();
     }
+
+
+
+    /**
+     * The edges @p edges of @p mesh, checked to be interior edges (two
+     * triangles run through each, in opposite directions) that are not
+     * cracks yet, as (smaller vertex, larger vertex, side of the triangle
+     * on the left of smaller -> larger).
+     */
+    std::vector<std::array<unsigned int, 3>>
+    checked_crack_edges(const CrackableMesh       &mesh,
+                        const topology::HalfEdges &half_edges,
+                        const std::vector<std::array<unsigned int, 2>> &edges)
+    {
+      const unsigned int n_vertices = mesh.get_block_mesh().vertices.size();
+      std::vector<std::array<unsigned int, 3>> to_crack;
+      to_crack.reserve(edges.size());
+      for (const auto &e : edges)
+        {
+          const std::string edge = "Crack: the edge between vertices " +
+                                   std::to_string(e[0]) + " and " +
+                                   std::to_string(e[1]);
+          AssertThrow(e[0] < n_vertices && e[1] < n_vertices,
+                      ExcMessage(edge + " does not exist: the mesh has " +
+                                 std::to_string(n_vertices) + " vertices."));
+          AssertThrow(e[0] != e[1],
+                      ExcMessage(edge + " joins a vertex to itself."));
+          const unsigned int a     = std::min(e[0], e[1]);
+          const unsigned int b     = std::max(e[0], e[1]);
+          const auto        &x     = mesh.get_block_mesh().vertices;
+          const std::string  where = edge + " (at " +
+                                    Utilities::to_string(x[a][0]) + ", " +
+                                    Utilities::to_string(x[a][1]) + " and " +
+                                    Utilities::to_string(x[b][0]) + ", " +
+                                    Utilities::to_string(x[b][1]) + ")";
+          const unsigned int left  = half_edges.find(a, b);
+          const unsigned int right = half_edges.find(b, a);
+          AssertThrow(left != numbers::invalid_unsigned_int ||
+                        right != numbers::invalid_unsigned_int,
+                      ExcMessage(where + " is not an edge of the mesh."));
+          AssertThrow(!mesh.is_cracked(a, b),
+                      ExcMessage(where + " is a crack already."));
+          const unsigned int side =
+            left != numbers::invalid_unsigned_int ? left : right;
+          AssertThrow(left != numbers::invalid_unsigned_int &&
+                        right != numbers::invalid_unsigned_int,
+                      ExcMessage(
+                        where + " lies on the boundary of block '" +
+                        mesh.get_block_names()[mesh.block_of_cell(side / 3)] +
+                        "' (only triangle " + std::to_string(side / 3) +
+                        " has it); only an interior edge, shared by "
+                        "two triangles, can crack."));
+          to_crack.push_back({{a, b, left}});
+        }
+      return to_crack;
+    }
+
+
+
+    /**
+     * The blocks of @p mesh after a split: a block that fell apart keeps
+     * its index for the part with its lowest cell (visiting the cells in
+     * increasing order meets it first), and the other parts become new
+     * blocks named "<name>.<k>". @p block_names are the names before;
+     * @p result receives each block's origin and children.
+     */
+    void
+    renumber_blocks(const std::vector<std::string> &block_names,
+                    geometry::BlockMesh            &mesh,
+                    CrackResult                    &result)
+    {
+      const unsigned int              n_cells  = mesh.triangles.size();
+      const unsigned int              n_blocks = block_names.size();
+      const topology::HalfEdges       new_half_edges(mesh.triangles,
+                                               mesh.vertices.size());
+      unsigned int                    n_components = 0;
+      const std::vector<unsigned int> component =
+        topology::connected_components(new_half_edges, n_cells, n_components);
+      std::vector<unsigned int> block_of_component(
+        n_components, numbers::invalid_unsigned_int);
+      std::vector<bool>               block_kept(n_blocks, false);
+      std::vector<unsigned int>       next_suffix(n_blocks, 1);
+      std::unordered_set<std::string> names(block_names.begin(),
+                                            block_names.end());
+      result.block_origin.resize(n_blocks);
+      std::iota(result.block_origin.begin(), result.block_origin.end(), 0u);
+      result.block_children.resize(n_blocks);
+      for (unsigned int b = 0; b < n_blocks; ++b)
+        result.block_children[b] = {b};
+      for (unsigned int c = 0; c < n_cells; ++c)
+        {
+          unsigned int      &block     = block_of_component[component[c]];
+          const unsigned int old_block = mesh.cell_block[c];
+          if (block == numbers::invalid_unsigned_int)
+            {
+              if (!block_kept[old_block])
+                {
+                  block                 = old_block;
+                  block_kept[old_block] = true;
+                }
+              else
+                {
+                  std::string name;
+                  do
+                    name = block_names[old_block] + "." +
+                           std::to_string(next_suffix[old_block]++);
+                  while (names.count(name) > 0);
+                  names.insert(name);
+                  block = mesh.block_names.size();
+                  mesh.block_names.push_back(name);
+                  result.block_origin.push_back(old_block);
+                  result.block_children[old_block].push_back(block);
+                }
+            }
+          // Blocks share no vertices, so no component spans two blocks.
+          Assert(result.block_origin[block] == old_block, ExcInternalError());
+          mesh.cell_block[c] = block;
+        }
+    }
   } // namespace
 
 
@@ -181,51 +300,12 @@ namespace ndda
   CrackableMesh::crack(const std::vector<std::array<unsigned int, 2>> &edges)
   {
     const unsigned int n_vertices = block_mesh.vertices.size();
-    const unsigned int n_cells    = block_mesh.triangles.size();
-    const unsigned int n_blocks   = block_names.size();
 
     // 1. Every edge must be an interior edge: two triangles run through it,
-    // in opposite directions. Kept as (smaller vertex, larger vertex, side
-    // of the triangle on the left of smaller -> larger).
+    // in opposite directions.
     const topology::HalfEdges half_edges(block_mesh.triangles, n_vertices);
-    std::vector<std::array<unsigned int, 3>> to_crack;
-    to_crack.reserve(edges.size());
-    for (const auto &e : edges)
-      {
-        const std::string edge = "Crack: the edge between vertices " +
-                                 std::to_string(e[0]) + " and " +
-                                 std::to_string(e[1]);
-        AssertThrow(e[0] < n_vertices && e[1] < n_vertices,
-                    ExcMessage(edge + " does not exist: the mesh has " +
-                               std::to_string(n_vertices) + " vertices."));
-        AssertThrow(e[0] != e[1],
-                    ExcMessage(edge + " joins a vertex to itself."));
-        const unsigned int a     = std::min(e[0], e[1]);
-        const unsigned int b     = std::max(e[0], e[1]);
-        const auto        &x     = block_mesh.vertices;
-        const std::string  where = edge + " (at " +
-                                  Utilities::to_string(x[a][0]) + ", " +
-                                  Utilities::to_string(x[a][1]) + " and " +
-                                  Utilities::to_string(x[b][0]) + ", " +
-                                  Utilities::to_string(x[b][1]) + ")";
-        const unsigned int left  = half_edges.find(a, b);
-        const unsigned int right = half_edges.find(b, a);
-        AssertThrow(left != numbers::invalid_unsigned_int ||
-                      right != numbers::invalid_unsigned_int,
-                    ExcMessage(where + " is not an edge of the mesh."));
-        AssertThrow(!is_cracked(a, b),
-                    ExcMessage(where + " is a crack already."));
-        const unsigned int side =
-          left != numbers::invalid_unsigned_int ? left : right;
-        AssertThrow(left != numbers::invalid_unsigned_int &&
-                      right != numbers::invalid_unsigned_int,
-                    ExcMessage(where + " lies on the boundary of block '" +
-                               block_names[cell_block[side / 3]] +
-                               "' (only triangle " + std::to_string(side / 3) +
-                               " has it); only an interior edge, shared by "
-                               "two triangles, can crack."));
-        to_crack.push_back({{a, b, left}});
-      }
+    std::vector<std::array<unsigned int, 3>> to_crack =
+      checked_crack_edges(*this, half_edges, edges);
     std::sort(to_crack.begin(), to_crack.end());
     to_crack.erase(std::unique(to_crack.begin(), to_crack.end()),
                    to_crack.end());
@@ -249,53 +329,8 @@ namespace ndda
     for (unsigned int v = n_vertices; v < mesh.vertices.size(); ++v)
       result.new_vertices.push_back(v);
 
-    // 3. Blocks that fell apart. Visiting the cells in increasing order
-    // meets each block's lowest cell first: its component keeps the block.
-    const topology::HalfEdges       new_half_edges(mesh.triangles,
-                                             mesh.vertices.size());
-    unsigned int                    n_components = 0;
-    const std::vector<unsigned int> component =
-      topology::connected_components(new_half_edges, n_cells, n_components);
-    std::vector<unsigned int>       block_of_component(n_components,
-                                                 numbers::invalid_unsigned_int);
-    std::vector<bool>               block_kept(n_blocks, false);
-    std::vector<unsigned int>       next_suffix(n_blocks, 1);
-    std::unordered_set<std::string> names(block_names.begin(),
-                                          block_names.end());
-    result.block_origin.resize(n_blocks);
-    std::iota(result.block_origin.begin(), result.block_origin.end(), 0u);
-    result.block_children.resize(n_blocks);
-    for (unsigned int b = 0; b < n_blocks; ++b)
-      result.block_children[b] = {b};
-    for (unsigned int c = 0; c < n_cells; ++c)
-      {
-        unsigned int      &block     = block_of_component[component[c]];
-        const unsigned int old_block = mesh.cell_block[c];
-        if (block == numbers::invalid_unsigned_int)
-          {
-            if (!block_kept[old_block])
-              {
-                block                 = old_block;
-                block_kept[old_block] = true;
-              }
-            else
-              {
-                std::string name;
-                do
-                  name = block_names[old_block] + "." +
-                         std::to_string(next_suffix[old_block]++);
-                while (names.count(name) > 0);
-                names.insert(name);
-                block = mesh.block_names.size();
-                mesh.block_names.push_back(name);
-                result.block_origin.push_back(old_block);
-                result.block_children[old_block].push_back(block);
-              }
-          }
-        // Blocks share no vertices, so no component spans two blocks.
-        Assert(result.block_origin[block] == old_block, ExcInternalError());
-        mesh.cell_block[c] = block;
-      }
+    // 3. Blocks that fell apart.
+    renumber_blocks(block_names, mesh, result);
 
     // The two faces of every cracked edge. Side j of cell c is still side
     // j of cell c.

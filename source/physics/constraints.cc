@@ -107,6 +107,41 @@ namespace ndda
 
 
 
+  namespace
+  {
+    /** The x dofs of the nodes the condition @p bc acts on (its points,
+     * then the boundary nodes on its segments); @p where names it. */
+    std::vector<types::global_dof_index>
+    nodes_of(const parameters::BoundaryCondition &bc,
+             const NodeLocator                   &nodes,
+             const std::string                   &where)
+    {
+      using index = types::global_dof_index;
+      std::vector<index> constrained_here;
+      for (const auto &p : bc.points)
+        for (const index i : nodes.nodes_at_vertex(p, where + "/Points"))
+          constrained_here.push_back(i);
+      for (const auto &segment : bc.segments)
+        {
+          const auto on_segment = nodes.boundary_nodes_on(segment);
+          AssertThrow(!on_segment.empty(),
+                      ExcMessage(where +
+                                 "/Segments: no boundary vertex "
+                                 "lies on the segment " +
+                                 to_string(segment.a) + " - " +
+                                 to_string(segment.b) +
+                                 ". Give a segment along a block's "
+                                 "boundary."));
+          constrained_here.insert(constrained_here.end(),
+                                  on_segment.begin(),
+                                  on_segment.end());
+        }
+      return constrained_here;
+    }
+  } // namespace
+
+
+
   void
   Constraints::setup(const parameters::BoundaryConditions &conditions,
                      const parameters::ConstraintMethod    method_in,
@@ -134,25 +169,7 @@ namespace ndda
         normal[0] = -std::sin(angle);
         normal[1] = std::cos(angle);
 
-        std::vector<index> constrained_here;
-        for (const auto &p : bc.points)
-          for (const index i : nodes.nodes_at_vertex(p, where + "/Points"))
-            constrained_here.push_back(i);
-        for (const auto &segment : bc.segments)
-          {
-            const auto on_segment = nodes.boundary_nodes_on(segment);
-            AssertThrow(!on_segment.empty(),
-                        ExcMessage(where +
-                                   "/Segments: no boundary vertex "
-                                   "lies on the segment " +
-                                   to_string(segment.a) + " - " +
-                                   to_string(segment.b) +
-                                   ". Give a segment along a block's "
-                                   "boundary."));
-            constrained_here.insert(constrained_here.end(),
-                                    on_segment.begin(),
-                                    on_segment.end());
-          }
+        const std::vector<index> constrained_here = nodes_of(bc, nodes, where);
         for (const auto i : constrained_here)
           {
             if (constrained[i])

@@ -13,6 +13,7 @@ namespace ndda
   DofMap::reinit(const dealii::DoFHandler<2> &dof_handler)
   {
     const auto &fe = dof_handler.get_fe();
+    this->fe       = &fe;
     n_dofs         = dof_handler.n_dofs();
     dofs_per_cell  = fe.n_dofs_per_cell();
     cell_dofs.resize(dof_handler.get_triangulation().n_active_cells() *

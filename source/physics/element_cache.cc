@@ -59,6 +59,41 @@ namespace ndda
         return materials.constitutive_law;
       return ConstitutiveLawRegistry::create("linear elasticity");
     }
+
+
+    /**
+     * The strain and spin of every shape function, t JxW and the stiffness
+     * t int B^T C B at the points of @p values (the cell quadrature), into
+     * @p d (sized before).
+     */
+    template <int dim, typename CellData>
+    void
+    add_operators(const FEValues<dim>           &values,
+                  const SymmetricTensor<4, dim> &C,
+                  const double                   t,
+                  CellData                      &d)
+    {
+      const FEValuesExtractors::Vector u(0);
+      const unsigned int               n_dofs = d.stiffness.m();
+      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+        {
+          d.weight[q] = t * values.JxW(q);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              d.strain[q * n_dofs + i]  = values[u].symmetric_gradient(i, q);
+              const Tensor<2, dim> grad = values[u].gradient(i, q);
+              d.spin[q * n_dofs + i]    = 0.5 * (grad[1][0] - grad[0][1]);
+            }
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const SymmetricTensor<2, dim> Ceps_i =
+                C * d.strain[q * n_dofs + i];
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                d.stiffness(i, j) +=
+                  (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
+            }
+        }
+    }
   } // namespace
 
 
@@ -100,16 +135,15 @@ namespace ndda
     for (const auto &material : materials.materials)
       tangents.push_back(law->tangent(material, materials.plane_strain));
 
-    FEValues<dim>                    fe_values(mapping,
+    FEValues<dim> fe_values(mapping,
                             fe,
                             quadrature,
                             update_gradients | update_JxW_values);
-    FEValues<dim>                    mass_values(mapping,
+    FEValues<dim> mass_values(mapping,
                               fe,
                               mass_quadrature,
                               update_values | update_JxW_values);
-    const FEValuesExtractors::Vector u(0);
-    const double                     t = materials.thickness;
+    const double  t = materials.thickness;
 
     unsigned int n_computed = 0;
     computed_cells.clear();
@@ -141,25 +175,7 @@ namespace ndda
         // Mass is conserved: the current density is rho_0 A_0 / A.
         const double density = material.density * d.initial_area / area;
 
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          {
-            d.weight[q] = t * fe_values.JxW(q);
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                d.strain[q * n_dofs + i] =
-                  fe_values[u].symmetric_gradient(i, q);
-                const Tensor<2, dim> grad = fe_values[u].gradient(i, q);
-                d.spin[q * n_dofs + i]    = 0.5 * (grad[1][0] - grad[0][1]);
-              }
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                const SymmetricTensor<2, dim> Ceps_i =
-                  C * d.strain[q * n_dofs + i];
-                for (unsigned int j = 0; j < n_dofs; ++j)
-                  d.stiffness(i, j) +=
-                    (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
-              }
-          }
+        add_operators(fe_values, C, t, d);
         add_mass_matrix(mass_values, density * t, d.mass);
         d.vertices.resize(cell->n_vertices());
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)

@@ -166,7 +166,7 @@ namespace ndda
     setup_contacts(const parameters::Parameters    &parameters,
                    const CrackableMesh             &mesh,
                    const std::vector<unsigned int> &cell_material,
-                   const contact::DofAccess        &dofs,
+                   const DofMap                    &dofs,
                    const double                     length,
                    contact::ContactHandler         &contacts)
     {

@@ -14,6 +14,7 @@
 #include <ndda/contact/contact_detection.h>
 #include <ndda/contact/contact_law.h>
 #include <ndda/mesh/boundary_edges.h>
+#include <ndda/physics/dof_map.h>
 
 #include <array>
 #include <map>
@@ -26,19 +27,6 @@ namespace ndda
 {
   namespace contact
   {
-    /**
-     * What the contacts need to know of the finite element space: the dofs
-     * of every cell (cell after cell), the vector component of each local
-     * dof, and the (x, y) dofs of every vertex.
-     */
-    struct DofAccess
-    {
-      const dealii::FiniteElement<2>                     *fe          = nullptr;
-      const std::vector<global_dof_index>                *cell_dofs   = nullptr;
-      const std::vector<unsigned int>                    *component   = nullptr;
-      const std::vector<std::array<global_dof_index, 2>> *vertex_dofs = nullptr;
-    };
-
     /** Figures of the last step, for the statistics file. */
     struct ContactStatistics
     {
@@ -109,13 +97,16 @@ namespace ndda
       /**
        * Set up for a mesh: its boundary edges, the friction coefficient of
        * each edge's side (tan of the joint friction angle of the edge's
-       * material) and the dofs. If @p settings has no contact law, the
-       * handler uses "penalty Coulomb" (default_contact_law).
+       * material) and the dofs, through a read-only view of the finite
+       * element space @p dofs (the element, the dofs of every cell and
+       * vertex), which must outlive the handler's use. If @p settings has
+       * no contact law, the handler uses "penalty Coulomb"
+       * (default_contact_law).
        */
       void
       initialize(const std::vector<BoundaryEdge> &edges,
                  const std::vector<double>       &edge_friction,
-                 const DofAccess                 &dofs,
+                 const DofMap                    &dofs,
                  const ContactSettings           &settings);
 
       /**
@@ -569,7 +560,7 @@ namespace ndda
       end_closed_contact(const Contact &c, const dealii::Vector<double> &d);
 
       ContactSettings                        settings;
-      DofAccess                              dofs;
+      const DofMap                          *dofs = nullptr;
       std::vector<BoundaryEdge>              edges;
       std::vector<double>                    edge_friction;
       std::vector<double>                    vertex_friction;

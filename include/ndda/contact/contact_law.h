@@ -10,7 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/base/plugin_registry.h>
-#include <ndda/parameters/parameters.h>
+#include <ndda/contact/contact_parameters.h>
 
 #include <memory>
 #include <string>

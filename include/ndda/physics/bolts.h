@@ -9,7 +9,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ndda/parameters/parameters.h>
+#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/constraints.h>
 
 #include <array>

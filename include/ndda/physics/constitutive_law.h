@@ -6,7 +6,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <ndda/base/plugin_registry.h>
-#include <ndda/parameters/parameters.h>
+#include <ndda/physics/physics_parameters.h>
 
 #include <memory>
 

@@ -16,7 +16,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/mesh/crackable_mesh.h>
-#include <ndda/parameters/parameters.h>
+#include <ndda/physics/physics_parameters.h>
 
 #include <array>
 #include <memory>

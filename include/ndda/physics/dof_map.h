@@ -45,6 +45,8 @@ namespace ndda
       return dofs_per_cell == 0 ? 0 : cell_dofs.size() / dofs_per_cell;
     }
 
+    /// The vector element (FESystem) of the space.
+    const dealii::FiniteElement<2> *fe = nullptr;
     /// Number of dofs of the space.
     unsigned int n_dofs = 0;
     /// Dofs of a cell.

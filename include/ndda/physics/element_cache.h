@@ -13,7 +13,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <ndda/parameters/parameters.h>
+#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/constitutive_law.h>
 
 #include <vector>

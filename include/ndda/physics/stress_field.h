@@ -8,7 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/mesh/crackable_mesh.h>
-#include <ndda/parameters/parameters.h>
+#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
 

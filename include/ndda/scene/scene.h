@@ -14,6 +14,7 @@
 #include <ndda/fracture/fracture_criterion.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/dof_map.h>
 #include <ndda/physics/stress_field.h>
 #include <ndda/time/step_controller.h>
 
@@ -89,7 +90,7 @@ namespace ndda
     setup_contacts(const parameters::Parameters    &parameters,
                    const CrackableMesh             &mesh,
                    const std::vector<unsigned int> &cell_material,
-                   const contact::DofAccess        &dofs,
+                   const DofMap                    &dofs,
                    const double                     length,
                    contact::ContactHandler         &contacts);
 

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <ndda/contact/contact_law.h>
+#include <ndda/contact/contact_parameters.h>
+#include <ndda/parameters/entries.h>
+
+namespace ndda
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    void
+    Contact::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      prm.declare_entry(
+        "Contact law",
+        contact::default_contact_law,
+        Patterns::Selection(contact::ContactLawRegistry::joined_names()),
+        contact::ContactLawRegistry::documentation(
+          "What happens in a contact once it is found: its springs, the "
+          "open-close and friction criteria, bonds and stored energy (a "
+          "plugin, see include/ndda/contact/contact_law.h; each reads its "
+          "own entries from the subsection of its name). The laws:"));
+      contact::ContactLawRegistry::declare_parameters(prm);
+      prm.declare_entry("Enable",
+                        "true",
+                        Patterns::Bool(),
+                        "Contact between blocks (and between the faces of "
+                        "cracks and notches). false: blocks pass through "
+                        "each other.");
+      prm.declare_entry("Penalty",
+                        "fixed",
+                        Patterns::Selection("fixed|automatic"),
+                        "fixed: normal spring stiffness = Penalty factor "
+                        "times the largest Young's modulus times the "
+                        "thickness (N/m); automatic: starts there and "
+                        "doubles whenever a step ends with a penetration "
+                        "beyond the tolerance, re-solving that step.");
+      prm.declare_entry("Penalty factor",
+                        "100",
+                        Patterns::Double(0.),
+                        "Normal contact spring stiffness as a multiple of "
+                        "the largest Young's modulus times the thickness "
+                        "(DDA's g0 / E); greater than zero.");
+      prm.declare_entry("Shear stiffness ratio",
+                        "0.4",
+                        Patterns::Double(0.),
+                        "Stiffness of the shear spring of a locked contact "
+                        "as a fraction of the normal one.");
+      prm.declare_entry("Open-close iterations",
+                        "10",
+                        Patterns::Integer(1, 100),
+                        "Largest number of solves in one step's open-close "
+                        "iteration; a step whose contact states still "
+                        "change is cut in half and retried.");
+      prm.declare_entry(
+        "Reused factorization iterations",
+        "10",
+        Patterns::Integer(0, 100),
+        "With UMFPACK or KLU: a system whose contact springs changed is first "
+        "solved by GMRES preconditioned with the last factorization, and "
+        "factorized anew only if GMRES needs more than this many "
+        "iterations (the result is the same to a relative residual of "
+        "1e-12). 0: factorize every changed system.");
+      prm.declare_entry("Vertex-vertex method",
+                        "revised",
+                        Patterns::Selection("revised|shortest path"),
+                        "revised: entrance edge from the vertex trajectory, "
+                        "temporary vertex-vertex spring for genuine "
+                        "indeterminacy (thesis 6.2, 6.3); shortest path: "
+                        "the original DDA rule, the potential reference "
+                        "edge with the smaller penetration.");
+      prm.declare_entry("Maximum penetration ratio",
+                        "1e-3",
+                        Patterns::Double(0.),
+                        "Penetration tolerance as a fraction of half the "
+                        "scene's height: reported in the statistics, and "
+                        "with 'Penalty = automatic' the limit above which "
+                        "the penalty is raised.");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Contact::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      law_name = prm.get("Contact law");
+      law      = contact::ContactLawRegistry::create_and_parse(law_name, prm);
+      enabled  = prm.get_bool("Enable");
+      penalty_method = prm.get("Penalty") == "fixed" ? PenaltyMethod::fixed :
+                                                       PenaltyMethod::automatic;
+      penalty_factor = prm.get_double("Penalty factor");
+      AssertThrow(penalty_factor > 0.,
+                  ExcMessage(
+                    "Contact/Penalty factor: " + prm.get("Penalty factor") +
+                    " is not positive. Give a multiple of the "
+                    "largest Young's modulus, e.g. 100."));
+      shear_stiffness_ratio     = prm.get_double("Shear stiffness ratio");
+      max_open_close_iterations = prm.get_integer("Open-close iterations");
+      reuse_iterations     = prm.get_integer("Reused factorization iterations");
+      vertex_vertex_method = prm.get("Vertex-vertex method") == "revised" ?
+                               VertexVertexMethod::revised :
+                               VertexVertexMethod::shortest_path;
+      max_penetration_ratio = prm.get_double("Maximum penetration ratio");
+      AssertThrow(max_penetration_ratio > 0. ||
+                    penalty_method == PenaltyMethod::fixed,
+                  ExcMessage("Contact/Maximum penetration ratio: must be "
+                             "greater than zero with 'Penalty = "
+                             "automatic'."));
+      prm.leave_subsection();
+    }
+  } // namespace parameters
+} // namespace ndda

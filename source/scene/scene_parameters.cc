@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <ndda/parameters/entries.h>
+#include <ndda/scene/scene_parameters.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace ndda
+{
+  namespace parameters
+  {
+    using namespace dealii;
+
+    namespace
+    {
+      void
+      declare_initial_state(ParameterHandler &prm)
+      {
+        prm.declare_entry("Initial stress",
+                          "0, 0, 0",
+                          Patterns::Anything(),
+                          "Initial stress sigma_xx, sigma_yy, sigma_xy of all "
+                          "cells of the block (Pa, tension positive).");
+        prm.declare_entry(
+          "Initial velocity",
+          "0; 0",
+          Patterns::Anything(),
+          "Initial velocity v_x; v_y (m/s) as functions of x and y, e.g. "
+          "'-2*y; 2*x' for a rotation about the origin at 2 rad/s.");
+      }
+
+      InitialState
+      parse_initial_state(ParameterHandler &prm, const std::string &where)
+      {
+        InitialState state;
+        const auto   stress = parse_numbers(prm.get("Initial stress"),
+                                          where + "/Initial stress",
+                                          3);
+        state.stress        = {{stress[0], stress[1], stress[2]}};
+        state.velocity      = prm.get("Initial velocity");
+        check_function(state.velocity, 2, "x,y", where + "/Initial velocity");
+        return state;
+      }
+
+      void
+      declare_mesh_size(ParameterHandler &prm)
+      {
+        prm.declare_entry("Material",
+                          "",
+                          Patterns::Anything(),
+                          "Name of the material of this block, one of "
+                          "Materials/Names.");
+        prm.declare_entry("Mesh size",
+                          "0",
+                          Patterns::Double(0.),
+                          "Longest triangle edge (m). Zero: use 'Target "
+                          "number of elements'.");
+        prm.declare_entry("Target number of elements",
+                          "0",
+                          Patterns::Integer(0),
+                          "Approximate number of triangles, used only if "
+                          "'Mesh size' is zero.");
+      }
+
+      template <typename Description>
+      void
+      parse_mesh_size(ParameterHandler  &prm,
+                      const std::string &where,
+                      const Materials   &materials,
+                      Description       &description)
+      {
+        description.material_id =
+          materials.id(prm.get("Material"), where + "/Material");
+        description.mesh_size = prm.get_double("Mesh size");
+        description.target_n_cells =
+          prm.get_integer("Target number of elements");
+        AssertThrow(description.mesh_size > 0. ||
+                      description.target_n_cells > 0,
+                    ExcMessage(where +
+                               ": neither 'Mesh size' nor 'Target number of "
+                               "elements' is set. Set one of them, e.g. "
+                               "'set Mesh size = 0.01'."));
+      }
+    } // namespace
+
+
+
+    void
+    Geometry::declare_parameters(ParameterHandler               &prm,
+                                 const std::vector<std::string> &block_names,
+                                 const std::vector<std::string> &region_names)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Blocks",
+                        "",
+                        Patterns::Anything(),
+                        "Comma separated names of polygon blocks; each has "
+                        "a subsection of that name.");
+      prm.declare_entry("Regions",
+                        "",
+                        Patterns::Anything(),
+                        "Comma separated names of rock regions cut into "
+                        "blocks by joints; each has a subsection of that "
+                        "name.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "A gmsh .msh file (relative to the .prm file) whose "
+                        "physical surfaces are blocks. Used instead of "
+                        "Blocks and Regions.");
+      prm.declare_entry("Mesh file materials",
+                        "",
+                        Patterns::Anything(),
+                        "Material of each physical surface of the mesh "
+                        "file, 'tag: material, tag: material'. Empty: the "
+                        "physical tag is the material id, an index into "
+                        "Materials/Names (0 is the first).");
+      prm.declare_entry("Minimum angle",
+                        "30",
+                        Patterns::Double(10., 33.),
+                        "Minimum triangle angle of the Delaunay "
+                        "refinement (degrees).");
+      for (const auto &name : block_names)
+        {
+          prm.enter_subsection(name);
+          prm.declare_entry("Outer boundary",
+                            "",
+                            Patterns::Anything(),
+                            "Polygon 'x, y; x, y; ...' (m), either "
+                            "orientation.");
+          prm.declare_entry("Holes",
+                            "",
+                            Patterns::Anything(),
+                            "Hole polygons inside the block, separated by "
+                            "'|'.");
+          prm.declare_entry("Cracks",
+                            "",
+                            Patterns::Anything(),
+                            "Pre-existing crack segments 'x1, y1, x2, y2; "
+                            "...' inside the block.");
+          declare_mesh_size(prm);
+          declare_initial_state(prm);
+          prm.leave_subsection();
+        }
+      for (const auto &name : region_names)
+        {
+          prm.enter_subsection(name);
+          prm.declare_entry("Outer boundary",
+                            "",
+                            Patterns::Anything(),
+                            "Polygon of the rock region 'x, y; ...' (m).");
+          prm.declare_entry("Holes",
+                            "",
+                            Patterns::Anything(),
+                            "Hole polygons, separated by '|'.");
+          prm.declare_entry("Joints",
+                            "",
+                            Patterns::Anything(),
+                            "Joint segments 'x1, y1, x2, y2; ...' that cut "
+                            "the region into blocks.");
+          prm.declare_entry("Keep dangling joints as cracks",
+                            "true",
+                            Patterns::Bool(),
+                            "Joint parts that end inside a block become "
+                            "cracks of it (true) or are dropped (false).");
+          declare_mesh_size(prm);
+          declare_initial_state(prm);
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Geometry::parse_parameters(ParameterHandler               &prm,
+                               const std::vector<std::string> &block_names,
+                               const std::vector<std::string> &region_names,
+                               const Materials                &materials,
+                               const std::string              &base_directory)
+    {
+      prm.enter_subsection("Geometry");
+      min_angle = prm.get_double("Minimum angle");
+      mesh_file = prm.get("Mesh file");
+      if (!mesh_file.empty())
+        {
+          if (mesh_file.front() != '/')
+            mesh_file = base_directory + mesh_file;
+          std::ifstream in(mesh_file);
+          AssertThrow(in.good(),
+                      ExcMessage("Geometry/Mesh file: cannot open '" +
+                                 mesh_file +
+                                 "'. Check the path; a relative path is "
+                                 "taken relative to the .prm file."));
+          AssertThrow(block_names.empty() && region_names.empty(),
+                      ExcMessage("Geometry/Mesh file: a mesh file is given "
+                                 "together with Blocks or Regions. Use "
+                                 "either the mesh file or the polygons."));
+          for (const auto &item : split(prm.get("Mesh file materials"), ","))
+            {
+              const auto pair = Utilities::split_string_list(item, ":");
+              AssertThrow(pair.size() == 2,
+                          ExcMessage("Geometry/Mesh file materials: '" + item +
+                                     "' is not 'tag: material'."));
+              const double tag =
+                to_double(pair[0], "Geometry/Mesh file materials");
+              AssertThrow(tag >= 0 && tag == std::floor(tag),
+                          ExcMessage("Geometry/Mesh file materials: '" +
+                                     pair[0] + "' is not a physical tag."));
+              materials.id(pair[1], "Geometry/Mesh file materials");
+              mesh_file_materials.emplace_back(static_cast<unsigned int>(tag),
+                                               pair[1]);
+            }
+        }
+      blocks.clear();
+      block_states.clear();
+      for (const auto &name : block_names)
+        {
+          const std::string where = "Geometry/" + name;
+          prm.enter_subsection(name);
+          geometry::BlockDescription block;
+          block.name = name;
+          block.outer =
+            parse_points(prm.get("Outer boundary"), where + "/Outer boundary");
+          block.holes  = parse_rings(prm.get("Holes"), where + "/Holes");
+          block.cracks = parse_segments(prm.get("Cracks"), where + "/Cracks");
+          parse_mesh_size(prm, where, materials, block);
+          blocks.push_back(block);
+          block_states.push_back(parse_initial_state(prm, where));
+          prm.leave_subsection();
+        }
+      regions.clear();
+      region_states.clear();
+      for (const auto &name : region_names)
+        {
+          const std::string where = "Geometry/" + name;
+          prm.enter_subsection(name);
+          geometry::RegionDescription region;
+          region.name = name;
+          region.outer =
+            parse_points(prm.get("Outer boundary"), where + "/Outer boundary");
+          region.holes  = parse_rings(prm.get("Holes"), where + "/Holes");
+          region.joints = parse_segments(prm.get("Joints"), where + "/Joints");
+          region.keep_dangling_as_cracks =
+            prm.get_bool("Keep dangling joints as cracks");
+          parse_mesh_size(prm, where, materials, region);
+          regions.push_back(region);
+          region_states.push_back(parse_initial_state(prm, where));
+          prm.leave_subsection();
+        }
+      prm.leave_subsection();
+    }
+  } // namespace parameters
+} // namespace ndda
