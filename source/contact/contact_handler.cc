@@ -149,6 +149,10 @@ namespace ndda
                              dealii::Vector<double>       &rhs) const
     {
       const double kn = settings.normal_stiffness;
+      // The springs' stiffness of one contact as a dense block, added to
+      // the sparse matrix row by row (one search per row, not per entry);
+      // one block for all contacts, so that it is allocated once.
+      dealii::FullMatrix<double> k;
       for (const Contact &c : contacts)
         {
           if (c.state == State::vertex_spring)
@@ -168,31 +172,13 @@ namespace ndda
             }
           if (c.state == State::open || c.chosen == invalid)
             continue;
-          add_springs(c.options[c.chosen], c, c.scale, &matrix, rhs);
+          const Option      &o = c.options[c.chosen];
+          const unsigned int n = o.dofs.size();
+          k.reinit(n, n);
+          settings.law->add_springs(o, c, c.scale, settings, &k, rhs);
+          for (unsigned int i = 0; i < n; ++i)
+            matrix.add(o.dofs[i], n, o.dofs.data(), &k(i, 0), false, false);
         }
-    }
-
-
-
-    void
-    ContactHandler::add_springs(const Option                 &o,
-                                const ContactState           &contact,
-                                const double                  scale,
-                                dealii::SparseMatrix<double> *matrix,
-                                dealii::Vector<double>       &rhs) const
-    {
-      if (matrix == nullptr)
-        {
-          settings.law->add_springs(o, contact, scale, settings, nullptr, rhs);
-          return;
-        }
-      // The springs' stiffness as one dense n x n block, added to the
-      // sparse matrix row by row (one search per row, not per entry).
-      const unsigned int         n = o.dofs.size();
-      dealii::FullMatrix<double> k(n, n);
-      settings.law->add_springs(o, contact, scale, settings, &k, rhs);
-      for (unsigned int i = 0; i < n; ++i)
-        matrix->add(o.dofs[i], n, o.dofs.data(), &k(i, 0), false, false);
     }
 
 
@@ -218,8 +204,12 @@ namespace ndda
           else if (c.state == State::open)
             scale = c.scale;
           if (scale > 0.)
-            add_springs(
-              c.options[c.start_chosen], c.start, scale, nullptr, force);
+            settings.law->add_springs(c.options[c.start_chosen],
+                                      c.start,
+                                      scale,
+                                      settings,
+                                      nullptr,
+                                      force);
         }
     }
 
@@ -429,7 +419,8 @@ namespace ndda
         ContactState state_at_end = c;
         if (c.state == State::locked)
           state_at_end.anchor -= trial.increment / o.length;
-        add_springs(at_end, state_at_end, c.scale, nullptr, end_force);
+        settings.law->add_springs(
+          at_end, state_at_end, c.scale, settings, nullptr, end_force);
       }
       double anchor = c.anchor;
       if (c.state != State::locked)

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The contact law registry (ASPECT-style plugins), the defaults of the
-// ContactLaw interface, and the linearised gaps of an Option.
+// The contact law registry (ASPECT-style plugins) and the defaults of the
+// ContactLaw interface.
 
 #include <deal.II/base/exceptions.h>
 
@@ -23,42 +23,6 @@ namespace ndda
     {
       link_plugin_PenaltyCoulomb();
     }
-
-
-
-    double
-    Option::normal_gap(const Vector<double> &d) const
-    {
-      double g = gap;
-      for (unsigned int k = 0; k < dofs.size(); ++k)
-        g += wn[k] * d[dofs[k]];
-      return g;
-    }
-
-
-
-    double
-    Option::tangential_increment(const Vector<double> &d) const
-    {
-      double s = 0;
-      for (unsigned int k = 0; k < dofs.size(); ++k)
-        s += wt[k] * d[dofs[k]];
-      return s;
-    }
-
-
-
-    Trial::Trial(const Option &o, const Vector<double> &d)
-      : gap(o.normal_gap(d))
-      , increment(o.tangential_increment(d))
-    {}
-
-
-
-    Trial::Trial(const double gap, const double increment)
-      : gap(gap)
-      , increment(increment)
-    {}
 
 
 

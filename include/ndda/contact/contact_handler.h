@@ -521,19 +521,6 @@ namespace ndda
       /** @} */
 
       /**
-       * Add the springs of the contact law for a contact in state
-       * @p contact on option @p o, all stiffnesses times @p scale: their
-       * forces at d = 0 to @p rhs and, unless @p matrix is null, their
-       * stiffness to @p matrix.
-       */
-      void
-      add_springs(const Option                 &o,
-                  const ContactState           &contact,
-                  const double                  scale,
-                  dealii::SparseMatrix<double> *matrix,
-                  dealii::Vector<double>       &rhs) const;
-
-      /**
        * Classify a resolved contact @p c from the solution @p d: its bond,
        * else the contact law; returns true if its state changed.
        */

@@ -179,6 +179,42 @@ namespace ndda
       double increment;
     };
 
+    inline double
+    Option::normal_gap(const dealii::Vector<double> &d) const
+    {
+      double g = gap;
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        g += wn[k] * d[dofs[k]];
+      return g;
+    }
+
+
+
+    inline double
+    Option::tangential_increment(const dealii::Vector<double> &d) const
+    {
+      double s = 0;
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        s += wt[k] * d[dofs[k]];
+      return s;
+    }
+
+
+
+    inline Trial::Trial(const Option &o, const dealii::Vector<double> &d)
+      : gap(o.normal_gap(d))
+      , increment(o.tangential_increment(d))
+    {}
+
+
+
+    inline Trial::Trial(const double gap, const double increment)
+      : gap(gap)
+      , increment(increment)
+    {}
+
+
+
     /**
      * Interface of a contact law: what happens in a contact between a
      * vertex and an edge once the handler has found it and chosen the edge
