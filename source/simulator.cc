@@ -27,8 +27,7 @@ namespace ndda
     , console(std::cout.rdbuf())
     , pcout(console, true)
     , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
-    , mapping(linear_mapping())
-    , dof_handler(mesh.get_triangulation())
+    , fem(mesh, timer)
   {
     if (triangulation != nullptr)
       {
@@ -42,7 +41,6 @@ namespace ndda
   template <int dim>
   Simulator<dim>::~Simulator()
   {
-    dof_handler.clear();
     log_file.close();
   }
 
@@ -57,24 +55,28 @@ namespace ndda
     scene_half_height = scene::half_height(mesh);
 
     setup_dofs();
-    setup_constraints();
+    fem.setup_constraints(parameters);
     setup_contacts();
     fracture_check.setup(mesh,
-                         cell_material,
+                         fem.cell_material,
                          scene::material_strengths(parameters.materials));
-    setup_loads();
+    fem.setup_loads(parameters);
     measure_points.setup(
-      mesh, *fe, dof_map, parameters.output.measure_points, false);
+      mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, false);
 
-    stresses.initialize(element_cache,
-                        dof_map,
+    stresses.initialize(fem.element_cache,
+                        fem.dof_map,
                         parameters.materials,
-                        cell_material,
+                        fem.cell_material,
                         parameters.control.rotate_with_spin);
     stresses.reinit(mesh.get_triangulation().n_active_cells(),
-                    element_cache.n_quadrature_points());
-    scene::set_initial_state(
-      parameters, mesh, dof_handler, mapping, stresses, kinematics.velocity);
+                    fem.element_cache.n_quadrature_points());
+    scene::set_initial_state(parameters,
+                             mesh,
+                             fem.dof_handler,
+                             fem.mapping,
+                             stresses,
+                             kinematics.velocity);
     compute_internal_force();
 
     step_controller = time::StepController(scene::step_limits(parameters));
@@ -93,63 +95,12 @@ namespace ndda
   void
   Simulator<dim>::setup_dofs(const bool element_matrices)
   {
-    // The element by name and what travels with it (physics/finite_element.h).
-    auto element = make_element(parameters.control.finite_element);
-    fe           = std::move(element.system);
-    face_quadrature =
-      std::make_unique<Quadrature<dim - 1>>(element.face_quadrature);
-    element_cache.set_quadratures(element.cell_quadrature,
-                                  element.mass_quadrature);
-    n_output_subdivisions = element.n_output_subdivisions;
-    dof_handler.distribute_dofs(*fe);
-    cell_material.resize(mesh.get_triangulation().n_active_cells());
-    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
-      cell_material[cell->active_cell_index()] = cell->material_id();
-
-    dof_map.reinit(dof_handler);
-
-    const unsigned int n = dof_handler.n_dofs();
+    fem.setup_dofs(parameters, element_matrices);
+    const unsigned int n = fem.dof_handler.n_dofs();
     displacement.reinit(n);
     kinematics.velocity.reinit(n);
     kinematics.inertia_force.reinit(n);
     internal_force.reinit(n);
-
-    if (element_matrices)
-      element_cache.update(
-        dof_handler, mapping, parameters.materials, false, 0.);
-    double max_modulus = 0;
-    for (const auto &m : parameters.materials.materials)
-      max_modulus = std::max(max_modulus, m.youngs_modulus);
-    penalty_stiffness = parameters.control.penalty_factor * max_modulus *
-                        parameters.materials.thickness;
-    linear_system.initialize(parameters.control.linear_solver,
-                             parameters.control.solver_tolerance,
-                             &timer);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_constraints()
-  {
-    const NodeLocator nodes(mesh, dof_handler, mapping);
-    if (parameters.control.linear_solver ==
-        parameters::LinearSolverType::cg_amg)
-      linear_system.get_linear_solver().set_rigid_body_modes(
-        nodes.support_points, nodes.component);
-    boundary_constraints.setup(parameters.boundary_conditions,
-                               parameters.control.constraint_method,
-                               nodes);
-    DynamicSparsityPattern dsp(dof_handler.n_dofs());
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    boundary_constraints.affine_constraints(),
-                                    true);
-    // Bolts couple two nodes that may lie in different blocks.
-    bolts.setup(parameters.bolts, nodes);
-    bolts.add_couplings(dsp);
-    linear_system.reinit(dsp, boundary_constraints, parameters.contact.enabled);
   }
 
 
@@ -160,32 +111,14 @@ namespace ndda
   {
     if (!parameters.contact.enabled)
       return;
-    const auto distances = scene::setup_contacts(
-      parameters, mesh, cell_material, dof_map, scene_half_height, contacts);
+    const auto distances  = scene::setup_contacts(parameters,
+                                                 mesh,
+                                                 fem.cell_material,
+                                                 fem.dof_map,
+                                                 scene_half_height,
+                                                 contacts);
     contact_threshold     = distances.detection;
     penetration_tolerance = distances.penetration_tolerance;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_loads()
-  {
-    loads.setup(parameters.loads, mesh, dof_handler, dof_map);
-    loads.update_faces(dof_handler,
-                       mapping,
-                       *face_quadrature,
-                       parameters.materials.thickness);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::assemble_global_matrices()
-  {
-    linear_system.assemble(element_cache, dof_map, bolts, displacement);
   }
 
 
@@ -204,7 +137,7 @@ namespace ndda
       }
     stored_strain_energy = energy - initial_strain_energy;
     // Bolts pull their anchors towards each other with their spring force.
-    bolts.add_internal_force(displacement, internal_force);
+    fem.bolts.add_internal_force(displacement, internal_force);
   }
 
 
@@ -214,10 +147,7 @@ namespace ndda
   Simulator<dim>::assemble_external_force(const double    t,
                                           Vector<double> &force) const
   {
-    force.reinit(dof_handler.n_dofs());
-    loads.add(t, force);
-    // Bolt pretension pulls the anchors together.
-    bolts.add_pretension(displacement, force);
+    fem.external_force(t, displacement, force);
   }
 
 
@@ -227,30 +157,13 @@ namespace ndda
   Simulator<dim>::build_element_matrices(const bool only_moved_cells)
   {
     TimerOutput::Scope scope(timer, "element matrices");
-    const double       tolerance = parameters.control.matrix_update_tolerance;
     // The first step uses the element matrices that setup() computed (it
     // needed them for the initial internal force); later steps recompute
     // those of the cells that moved.
-    if (only_moved_cells)
-      {
-        const unsigned int n_computed =
-          element_cache.update(dof_handler,
-                               mapping,
-                               parameters.materials,
-                               tolerance > 0.,
-                               tolerance);
-        if (n_computed == 0)
-          return;
-      }
+    if (!fem.update_matrices(parameters, only_moved_cells, displacement))
+      return;
     ++n_matrix_rebuilds;
-    assemble_global_matrices();
-    loads.update_gravity(linear_system.get_mass_matrix(), dof_map);
     compute_internal_force();
-    if (only_moved_cells)
-      loads.update_faces(dof_handler,
-                         mapping,
-                         *face_quadrature,
-                         parameters.materials.thickness);
   }
 
 
@@ -265,9 +178,9 @@ namespace ndda
     assemble_external_force(time, rhs);
     rhs -= internal_force;
     Vector<double> acceleration;
-    linear_system.solve_mass(rhs, boundary_constraints, acceleration);
-    linear_system.get_mass_matrix().vmult(kinematics.inertia_force,
-                                          acceleration);
+    fem.linear_system.solve_mass(rhs, fem.constraints, acceleration);
+    fem.linear_system.get_mass_matrix().vmult(kinematics.inertia_force,
+                                              acceleration);
   }
 
 
@@ -277,11 +190,11 @@ namespace ndda
   Simulator<dim>::try_time_step(const double dt, Vector<double> &d)
   {
     const auto &integrator = *parameters.control.time_integrator;
-    linear_system.prepare_step(dt,
-                               integrator.mass_coefficient(dt),
-                               integrator.damping_coefficient(dt),
-                               boundary_constraints,
-                               penalty_stiffness);
+    fem.linear_system.prepare_step(dt,
+                                   integrator.mass_coefficient(dt),
+                                   integrator.damping_coefficient(dt),
+                                   fem.constraints,
+                                   fem.penalty_stiffness);
 
     // Right-hand side at the end of the step (thesis 3.15):
     // f_ext(t1) - f_int + inertia terms of the integrator.
@@ -291,26 +204,23 @@ namespace ndda
       assemble_external_force(time + dt, step_external_force);
       rhs = step_external_force;
       rhs -= internal_force;
-      integrator.add_inertia_terms(linear_system.get_mass_matrix(),
+      integrator.add_inertia_terms(fem.linear_system.get_mass_matrix(),
                                    kinematics,
                                    dt,
                                    rhs);
     }
-    Vector<double> prescribed(dof_handler.n_dofs());
-    boundary_constraints.prescribed_increment(time,
-                                              dt,
-                                              displacement,
-                                              prescribed);
-    if (!boundary_constraints.exact())
-      boundary_constraints.add_penalty_forces(penalty_stiffness,
-                                              prescribed,
-                                              rhs);
+    Vector<double> prescribed(fem.dof_handler.n_dofs());
+    fem.constraints.prescribed_increment(time, dt, displacement, prescribed);
+    if (!fem.constraints.exact())
+      fem.constraints.add_penalty_forces(fem.penalty_stiffness,
+                                         prescribed,
+                                         rhs);
 
-    if (!open_close.solve(linear_system,
+    if (!open_close.solve(fem.linear_system,
                           parameters.contact.enabled ? &contacts : nullptr,
                           rhs,
                           prescribed,
-                          boundary_constraints,
+                          fem.constraints,
                           d,
                           inertia_correction))
       return time::AttemptResult::not_settled;
@@ -325,14 +235,14 @@ namespace ndda
   {
     // DDA step control: the largest nodal displacement must stay below the
     // allowed fraction of half the scene height.
-    max_increment = dof_map.max_vertex_norm(d);
+    max_increment = fem.dof_map.max_vertex_norm(d);
     if (max_increment >
         parameters.control.max_displacement_ratio * scene_half_height)
       return time::AttemptResult::too_large;
     // A cell that the increment turns inside out: no strain measure of the
     // linear update holds there (its strain energy changes sign). Only a
     // diverging motion or a step far too large does this; cut the step.
-    if (mesh.inverts_a_cell(dof_map.vertex_values(d)))
+    if (mesh.inverts_a_cell(fem.dof_map.vertex_values(d)))
       return time::AttemptResult::inverted;
     if (parameters.contact.enabled &&
         parameters.contact.penalty_method ==
@@ -357,7 +267,7 @@ namespace ndda
       contacts.end_step(d);
 
     // Velocity and acceleration at the end of the step.
-    const auto &mass = linear_system.get_mass_matrix();
+    const auto &mass = fem.linear_system.get_mass_matrix();
     parameters.control.time_integrator->update(
       d, dt, mass, inertia_correction, kinematics);
 
@@ -365,7 +275,7 @@ namespace ndda
     // increment's rotation, then add the increment's stress.
     if (parameters.control.rotate_with_spin)
       rotate_block_motion(mesh,
-                          dof_map,
+                          fem.dof_map,
                           stresses,
                           mass,
                           d,
@@ -373,7 +283,7 @@ namespace ndda
                           kinematics.inertia_force);
     stresses.advance(d);
 
-    bolts.update(displacement, d);
+    fem.bolts.update(displacement, d);
 
     // Work of the loads over the step, by the trapezoidal rule.
     load_work += 0.5 * (external_force * d + step_external_force * d);
@@ -384,7 +294,7 @@ namespace ndda
     compute_internal_force();
 
     displacement += d;
-    mesh.move_vertices(dof_map.vertex_values(d));
+    mesh.move_vertices(fem.dof_map.vertex_values(d));
     time += dt;
   }
 
@@ -398,12 +308,12 @@ namespace ndda
     const auto         &block_mesh = mesh.get_block_mesh();
     std::vector<double> area(stresses.n_cells());
     for (unsigned int c = 0; c < stresses.n_cells(); ++c)
-      for (const double w : element_cache[c].weight)
+      for (const double w : fem.element_cache[c].weight)
         area[c] += w;
     // The step's trial end: vertices moved by the increment, stresses
     // advanced by it (as commit_step() will do, if no edge cracks).
     std::vector<Point<dim>> end_vertices = block_mesh.vertices;
-    const auto              increment    = dof_map.vertex_values(d);
+    const auto              increment    = fem.dof_map.vertex_values(d);
     for (unsigned int v = 0; v < end_vertices.size(); ++v)
       end_vertices[v] += increment[v];
     std::vector<SymmetricTensor<2, dim>> end_stresses(stresses.n_cells());
@@ -437,23 +347,15 @@ namespace ndda
     // lumped mass (a force vector must not be copied to both sides of a
     // split node).
     const std::vector<types::global_dof_index> old_cell_dofs =
-      dof_map.cell_dofs;
-    const auto lumped_mass = [this]() {
-      const auto    &mass = linear_system.get_mass_matrix();
-      Vector<double> m(mass.m());
-      for (unsigned int i = 0; i < m.size(); ++i)
-        for (auto entry = mass.begin(i); entry != mass.end(i); ++entry)
-          m[i] += entry->value();
-      return m;
-    };
-    const Vector<double> old_mass = lumped_mass();
+      fem.dof_map.cell_dofs;
+    const Vector<double> old_mass = fem.linear_system.lumped_mass();
     Vector<double>       acceleration(kinematics.inertia_force);
     for (unsigned int i = 0; i < acceleration.size(); ++i)
       if (old_mass[i] > 0.)
         acceleration[i] /= old_mass[i];
     const Vector<double>          old_displacement(displacement);
     const Vector<double>          old_velocity(kinematics.velocity);
-    const std::vector<double>     bolt_forces = bolts.axial_forces();
+    const std::vector<double>     bolt_forces = fem.bolts.axial_forces();
     const contact::ContactHandler old_contacts(contacts);
 
     mesh.crack(edges);
@@ -461,10 +363,10 @@ namespace ndda
 
     setup_dofs(false);
     const auto transfer = [&](const Vector<double> &old, Vector<double> &now) {
-      now.reinit(dof_handler.n_dofs());
+      now.reinit(fem.dof_handler.n_dofs());
       state_transfer::transfer_dof_values(old_cell_dofs,
                                           old,
-                                          dof_map.cell_dofs,
+                                          fem.dof_map.cell_dofs,
                                           now);
     };
     transfer(old_displacement, displacement);
@@ -476,7 +378,7 @@ namespace ndda
     if (parameters.contact.enabled)
       contacts.carry_memory_from(old_contacts);
     fracture_check.setup(mesh,
-                         cell_material,
+                         fem.cell_material,
                          scene::material_strengths(parameters.materials));
 
     // A crack changes no cell's shape (cells keep their index, vertex
@@ -484,19 +386,14 @@ namespace ndda
     // recomputed only for cells that moved beyond the tolerance since
     // their last computation, as in any step. Then global matrices,
     // gravity, internal force, loaded faces, and M a on the new mesh.
-    const double tolerance = parameters.control.matrix_update_tolerance;
-    element_cache.update(
-      dof_handler, mapping, parameters.materials, tolerance > 0., tolerance);
-    build_element_matrices(false);
-    loads.update_faces(dof_handler,
-                       mapping,
-                       *face_quadrature,
-                       parameters.materials.thickness);
-    kinematics.inertia_force = lumped_mass();
+    fem.update_matrices(parameters, true, displacement, true);
+    ++n_matrix_rebuilds;
+    compute_internal_force();
+    kinematics.inertia_force = fem.linear_system.lumped_mass();
     kinematics.inertia_force.scale(new_acceleration);
-    external_force.reinit(dof_handler.n_dofs());
+    external_force.reinit(fem.dof_handler.n_dofs());
     assemble_external_force(time, external_force);
-    linear_system.invalidate();
+    fem.linear_system.invalidate();
   }
 
 
@@ -509,15 +406,15 @@ namespace ndda
     // Constraints, loads and measure points are found by position on the
     // scene's initial geometry: set them up with the mesh moved back
     // there, then move it forward again.
-    auto u = dof_map.vertex_values(displacement);
+    auto u = fem.dof_map.vertex_values(displacement);
     for (auto &x : u)
       x *= -1.;
     mesh.move_vertices(u);
-    setup_constraints();
-    bolts.set_axial_forces(bolt_forces);
-    setup_loads();
+    fem.setup_constraints(parameters);
+    fem.bolts.set_axial_forces(bolt_forces);
+    fem.setup_loads(parameters);
     measure_points.setup(
-      mesh, *fe, dof_map, parameters.output.measure_points, true);
+      mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, true);
     for (auto &x : u)
       x *= -1.;
     mesh.move_vertices(u);
@@ -529,7 +426,7 @@ namespace ndda
   double
   Simulator<dim>::kinetic_energy() const
   {
-    return 0.5 * linear_system.get_mass_matrix().matrix_norm_square(
+    return 0.5 * fem.linear_system.get_mass_matrix().matrix_norm_square(
                    kinematics.velocity);
   }
 
@@ -568,10 +465,10 @@ namespace ndda
           contacts.begin_step(mesh.get_block_mesh().vertices,
                               contact_threshold);
         }
-        if (linear_system.update_contact_couplings(contacts.get_couplings(),
-                                                   dof_map,
-                                                   boundary_constraints))
-          assemble_global_matrices();
+        if (fem.linear_system.update_contact_couplings(contacts.get_couplings(),
+                                                       fem.dof_map,
+                                                       fem.constraints))
+          fem.assemble(displacement);
       }
     double              dt = step_controller.attempt_size(time);
     time::AttemptResult result;
@@ -718,10 +615,10 @@ namespace ndda
           << "  blocks: " << mesh.n_blocks()
           << ", cells: " << mesh.get_triangulation().n_active_cells()
           << ", vertices: " << mesh.get_triangulation().n_vertices()
-          << ", degrees of freedom: " << dof_handler.n_dofs() << " ("
-          << fe->base_element(0).get_name() << ")\n"
+          << ", degrees of freedom: " << fem.dof_handler.n_dofs() << " ("
+          << fem.fe->base_element(0).get_name() << ")\n"
           << "  constrained nodes: "
-          << boundary_constraints.constrained_nodes().size()
+          << fem.constraints.constrained_nodes().size()
           << ", output: " << directory << std::endl;
 
     Timer                       wall;
@@ -769,7 +666,7 @@ namespace ndda
     pcout << "  done: " << step_number << " steps, "
           << step_controller.n_total_cuts() << " step cuts, "
           << n_matrix_rebuilds << " matrix builds, "
-          << linear_system.n_factorizations() << " factorizations, "
+          << fem.linear_system.n_factorizations() << " factorizations, "
           << wall.wall_time() << " s wall time" << std::endl;
     timer.print_summary();
     log_file.close();

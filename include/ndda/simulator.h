@@ -39,6 +39,7 @@
 #include <ndda/postprocess/measure_points.h>
 #include <ndda/postprocess/progress_report.h>
 #include <ndda/postprocess/visualization.h>
+#include <ndda/scene/discretization.h>
 #include <ndda/time/step_controller.h>
 #include <ndda/time/time_integrator.h>
 
@@ -128,20 +129,20 @@ namespace ndda
     const DoFHandler<dim> &
     get_dof_handler() const
     {
-      return dof_handler;
+      return fem.dof_handler;
     }
 
     const Mapping<dim> &
     get_mapping() const
     {
-      return mapping;
+      return fem.mapping;
     }
 
     /** Subdivisions of a cell in the output (from the element). */
     unsigned int
     get_n_output_subdivisions() const
     {
-      return n_output_subdivisions;
+      return fem.n_output_subdivisions;
     }
 
     double
@@ -187,7 +188,7 @@ namespace ndda
     const SparseMatrix<double> &
     get_mass_matrix() const
     {
-      return linear_system.get_mass_matrix();
+      return fem.linear_system.get_mass_matrix();
     }
 
     /**
@@ -219,7 +220,7 @@ namespace ndda
     unsigned int
     n_factorizations() const
     {
-      return linear_system.n_factorizations();
+      return fem.linear_system.n_factorizations();
     }
 
     /** Contacts of the scene: states, statistics of the last step. */
@@ -327,11 +328,6 @@ namespace ndda
      */
     void
     setup_dofs(const bool element_matrices = true);
-    /** Constraints, bolts and the sparsity pattern of the linear system. */
-    void
-    setup_constraints();
-    void
-    setup_loads();
     /** The contacts of the present mesh. */
     void
     setup_contacts();
@@ -339,8 +335,6 @@ namespace ndda
      * @p only_moved_cells) and what depends on them. */
     void
     build_element_matrices(const bool only_moved_cells);
-    void
-    assemble_global_matrices();
     /** Internal force and strain energy of the present stresses. */
     void
     compute_internal_force();
@@ -414,24 +408,11 @@ namespace ndda
     ConditionalOStream  pcout;
     mutable TimerOutput timer;
 
-    CrackableMesh                        mesh;
-    std::unique_ptr<FESystem<dim>>       fe;
-    MappingFE<dim>                       mapping;
-    std::unique_ptr<Quadrature<dim - 1>> face_quadrature;
-    unsigned int                         n_output_subdivisions = 1;
-    DoFHandler<dim>                      dof_handler;
+    CrackableMesh mesh;
+    /// The finite element discretization of the blocks: element, dofs,
+    /// element matrices, constraints, loads, bolts, linear system.
+    scene::Discretization fem;
 
-    ElementCache<dim> element_cache;
-    /// The dofs as index arrays, for the loops of the time step.
-    DofMap dof_map;
-    /// Material id of every active cell.
-    std::vector<unsigned int> cell_material;
-
-    Constraints boundary_constraints;
-    /// Stiffness of the penalty springs of Constraint method = penalty.
-    double penalty_stiffness = 0;
-
-    LinearSystem             linear_system;
     contact::OpenCloseSolver open_close;
     contact::ContactHandler  contacts;
     double                   contact_threshold     = 0;
@@ -451,9 +432,7 @@ namespace ndda
     double         load_work              = 0;
     double         initial_kinetic_energy = 0;
 
-    StressField   stresses;
-    ExternalLoads loads;
-    BoltSprings   bolts;
+    StressField stresses;
 
     postprocess::MeasurePoints measure_points;
 

@@ -280,6 +280,19 @@ namespace ndda
 
 
 
+  Vector<double>
+  LinearSystem::lumped_mass() const
+  {
+    Vector<double> m(mass_matrix.m());
+    for (unsigned int i = 0; i < m.size(); ++i)
+      for (auto entry = mass_matrix.begin(i); entry != mass_matrix.end(i);
+           ++entry)
+        m[i] += entry->value();
+    return m;
+  }
+
+
+
   void
   LinearSystem::invalidate()
   {

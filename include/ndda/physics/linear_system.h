@@ -147,6 +147,10 @@ namespace ndda
       return mass_matrix;
     }
 
+    /** The row sums of the mass matrix: nodal masses (kg). */
+    Vector<double>
+    lumped_mass() const;
+
     /** Whether any material has viscous damping. */
     bool
     has_damping() const

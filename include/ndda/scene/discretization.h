@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_scene_discretization_h
+#define ndda_scene_discretization_h
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <ndda/mesh/crackable_mesh.h>
+#include <ndda/parameters/parameters.h>
+#include <ndda/physics/bolts.h>
+#include <ndda/physics/constraints.h>
+#include <ndda/physics/dof_map.h>
+#include <ndda/physics/element_cache.h>
+#include <ndda/physics/linear_system.h>
+#include <ndda/physics/loads.h>
+
+#include <memory>
+#include <vector>
+
+namespace ndda
+{
+  namespace scene
+  {
+    /**
+     * The finite element discretization of a scene's blocks, set up from
+     * its parameters on its mesh: the element (by name, with its
+     * quadratures, mapping and output subdivisions), the dofs and their
+     * index arrays, the material of every cell, the element matrices, the
+     * constraints, bolts and loads, and the linear system. It holds no
+     * state of the motion: the Simulator owns displacement, velocities and
+     * stresses, and hands the displacement in where bolts need it.
+     *
+     * Its parts are public: the time step reads them all.
+     *
+     * @ingroup simulator
+     */
+    class Discretization
+    {
+    public:
+      /** On @p mesh (referenced); the linear system is timed in @p timer. */
+      Discretization(CrackableMesh &mesh, dealii::TimerOutput &timer);
+
+      ~Discretization();
+
+      /**
+       * The element of Control/Finite element, its dofs and index arrays,
+       * the material id of every cell, a new linear solver; with
+       * @p element_matrices also every cell's element matrices on the
+       * present geometry.
+       */
+      void
+      setup_dofs(const parameters::Parameters &parameters,
+                 const bool                    element_matrices);
+
+      /**
+       * Constraints, bolts and the sparsity pattern of the linear system,
+       * found by position on the present geometry.
+       */
+      void
+      setup_constraints(const parameters::Parameters &parameters);
+
+      /** Loads: points and loaded faces on the present geometry. */
+      void
+      setup_loads(const parameters::Parameters &parameters);
+
+      /**
+       * Recompute the element matrices of the cells that moved beyond
+       * Control/Matrix update tolerance (all of them without
+       * @p only_moved_cells), and then the global matrices (with the bolt
+       * springs on @p displacement), gravity and, with @p only_moved_cells,
+       * the loaded faces. Returns false if no cell needed it (nothing was
+       * done), unless @p always_assemble (after a crack: the dofs are new,
+       * though no cell changed its shape).
+       */
+      bool
+      update_matrices(const parameters::Parameters &parameters,
+                      const bool                    only_moved_cells,
+                      const Vector<double>         &displacement,
+                      const bool                    always_assemble = false);
+
+      /** Assemble K, M and C (bolt springs on @p displacement). */
+      void
+      assemble(const Vector<double> &displacement);
+
+      /**
+       * The external force at time @p t on the present geometry: loads and
+       * the bolts' pretension (on @p displacement).
+       */
+      void
+      external_force(const double          t,
+                     const Vector<double> &displacement,
+                     Vector<double>       &force) const;
+
+      CrackableMesh                 &mesh;
+      std::unique_ptr<FESystem<2>>   fe;
+      MappingFE<2>                   mapping;
+      std::unique_ptr<Quadrature<1>> face_quadrature;
+      unsigned int                   n_output_subdivisions = 1;
+      DoFHandler<2>                  dof_handler;
+      ElementCache<2>                element_cache;
+      /// The dofs as index arrays, for the loops of the time step.
+      DofMap dof_map;
+      /// Material id of every active cell.
+      std::vector<unsigned int> cell_material;
+      Constraints               constraints;
+      /// Stiffness of the penalty springs of Constraint method = penalty.
+      double        penalty_stiffness = 0;
+      LinearSystem  linear_system;
+      ExternalLoads loads;
+      BoltSprings   bolts;
+
+    private:
+      dealii::TimerOutput &timer;
+    };
+  } // namespace scene
+} // namespace ndda
+
+#endif

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <ndda/physics/finite_element.h>
+#include <ndda/scene/discretization.h>
+
+#include <algorithm>
+
+namespace ndda
+{
+  namespace scene
+  {
+    Discretization::Discretization(CrackableMesh       &mesh,
+                                   dealii::TimerOutput &timer)
+      : mesh(mesh)
+      , mapping(linear_mapping())
+      , dof_handler(mesh.get_triangulation())
+      , timer(timer)
+    {}
+
+
+
+    Discretization::~Discretization()
+    {
+      dof_handler.clear();
+    }
+
+
+
+    void
+    Discretization::setup_dofs(const parameters::Parameters &parameters,
+                               const bool                    element_matrices)
+    {
+      // The element by name and what travels with it
+      // (physics/finite_element.h).
+      auto element = make_element(parameters.control.finite_element);
+      fe           = std::move(element.system);
+      face_quadrature =
+        std::make_unique<Quadrature<1>>(element.face_quadrature);
+      element_cache.set_quadratures(element.cell_quadrature,
+                                    element.mass_quadrature);
+      n_output_subdivisions = element.n_output_subdivisions;
+      dof_handler.distribute_dofs(*fe);
+      cell_material.resize(mesh.get_triangulation().n_active_cells());
+      for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+        cell_material[cell->active_cell_index()] = cell->material_id();
+      dof_map.reinit(dof_handler);
+
+      if (element_matrices)
+        element_cache.update(
+          dof_handler, mapping, parameters.materials, false, 0.);
+      double max_modulus = 0;
+      for (const auto &m : parameters.materials.materials)
+        max_modulus = std::max(max_modulus, m.youngs_modulus);
+      penalty_stiffness = parameters.control.penalty_factor * max_modulus *
+                          parameters.materials.thickness;
+      linear_system.initialize(parameters.control.linear_solver,
+                               parameters.control.solver_tolerance,
+                               &timer);
+    }
+
+
+
+    void
+    Discretization::setup_constraints(const parameters::Parameters &parameters)
+    {
+      const NodeLocator nodes(mesh, dof_handler, mapping);
+      if (parameters.control.linear_solver ==
+          parameters::LinearSolverType::cg_amg)
+        linear_system.get_linear_solver().set_rigid_body_modes(
+          nodes.support_points, nodes.component);
+      constraints.setup(parameters.boundary_conditions,
+                        parameters.control.constraint_method,
+                        nodes);
+      DynamicSparsityPattern dsp(dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      dsp,
+                                      constraints.affine_constraints(),
+                                      true);
+      // Bolts couple two nodes that may lie in different blocks.
+      bolts.setup(parameters.bolts, nodes);
+      bolts.add_couplings(dsp);
+      linear_system.reinit(dsp, constraints, parameters.contact.enabled);
+    }
+
+
+
+    void
+    Discretization::setup_loads(const parameters::Parameters &parameters)
+    {
+      loads.setup(parameters.loads, mesh, dof_handler, dof_map);
+      loads.update_faces(dof_handler,
+                         mapping,
+                         *face_quadrature,
+                         parameters.materials.thickness);
+    }
+
+
+
+    bool
+    Discretization::update_matrices(const parameters::Parameters &parameters,
+                                    const bool            only_moved_cells,
+                                    const Vector<double> &displacement,
+                                    const bool            always_assemble)
+    {
+      const double tolerance = parameters.control.matrix_update_tolerance;
+      if (only_moved_cells &&
+          element_cache.update(dof_handler,
+                               mapping,
+                               parameters.materials,
+                               tolerance > 0.,
+                               tolerance) == 0 &&
+          !always_assemble)
+        return false;
+      assemble(displacement);
+      loads.update_gravity(linear_system.get_mass_matrix(), dof_map);
+      if (only_moved_cells)
+        loads.update_faces(dof_handler,
+                           mapping,
+                           *face_quadrature,
+                           parameters.materials.thickness);
+      return true;
+    }
+
+
+
+    void
+    Discretization::assemble(const Vector<double> &displacement)
+    {
+      linear_system.assemble(element_cache, dof_map, bolts, displacement);
+    }
+
+
+
+    void
+    Discretization::external_force(const double          t,
+                                   const Vector<double> &displacement,
+                                   Vector<double>       &force) const
+    {
+      force.reinit(dof_handler.n_dofs());
+      loads.add(t, force);
+      // Bolt pretension pulls the anchors together.
+      bolts.add_pretension(displacement, force);
+    }
+  } // namespace scene
+} // namespace ndda
