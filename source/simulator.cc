@@ -80,13 +80,9 @@ namespace ndda
     compute_internal_force();
 
     step_controller = time::StepController(scene::step_limits(parameters));
-    contact::OpenCloseSolver::Settings settings;
-    settings.max_iterations   = parameters.contact.max_open_close_iterations;
-    settings.reuse_iterations = parameters.contact.reuse_iterations;
-    settings.average_contact_forces =
-      parameters.control.time_integrator->averages_contact_forces();
-    open_close = contact::OpenCloseSolver(settings);
-    is_set_up  = true;
+    open_close =
+      contact::OpenCloseSolver(scene::open_close_settings(parameters));
+    is_set_up = true;
   }
 
 
@@ -160,27 +156,11 @@ namespace ndda
     // The first step uses the element matrices that setup() computed (it
     // needed them for the initial internal force); later steps recompute
     // those of the cells that moved.
-    if (!fem.update_matrices(parameters, only_moved_cells, displacement))
+    if (!fem.update_matrices(
+          parameters, only_moved_cells, displacement, stresses))
       return;
     ++n_matrix_rebuilds;
     compute_internal_force();
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::compute_initial_acceleration()
-  {
-    // Newmark needs the acceleration at t = 0: M a0 = f_ext(0) - f_int, with
-    // zero acceleration at constrained dofs.
-    Vector<double> rhs;
-    assemble_external_force(time, rhs);
-    rhs -= internal_force;
-    Vector<double> acceleration;
-    fem.linear_system.solve_mass(rhs, fem.constraints, acceleration);
-    fem.linear_system.get_mass_matrix().vmult(kinematics.inertia_force,
-                                              acceleration);
   }
 
 
@@ -304,32 +284,19 @@ namespace ndda
   std::vector<std::array<unsigned int, 2>>
   Simulator<dim>::check_fracture(const Vector<double> &d, const double dt)
   {
-    TimerOutput::Scope  scope(timer, "fracture check");
-    const auto         &block_mesh = mesh.get_block_mesh();
-    std::vector<double> area(stresses.n_cells());
-    for (unsigned int c = 0; c < stresses.n_cells(); ++c)
-      for (const double w : fem.element_cache[c].weight)
-        area[c] += w;
+    TimerOutput::Scope scope(timer, "fracture check");
+    const auto        &block_mesh = mesh.get_block_mesh();
     // The step's trial end: vertices moved by the increment, stresses
     // advanced by it (as commit_step() will do, if no edge cracks).
     std::vector<Point<dim>> end_vertices = block_mesh.vertices;
     const auto              increment    = fem.dof_map.vertex_values(d);
     for (unsigned int v = 0; v < end_vertices.size(); ++v)
       end_vertices[v] += increment[v];
-    std::vector<SymmetricTensor<2, dim>> end_stresses(stresses.n_cells());
-    std::vector<SymmetricTensor<2, dim>> sigma;
-    for (unsigned int c = 0; c < stresses.n_cells(); ++c)
-      {
-        sigma = stresses[c];
-        stresses.advance(c, d, sigma);
-        end_stresses[c] = stresses.mean(c, sigma);
-      }
-    const auto start_stresses = stresses.cell_means();
     return fracture_check.check(parameters.fracture,
                                 block_mesh.triangles,
-                                area,
-                                {block_mesh.vertices, start_stresses},
-                                {end_vertices, end_stresses},
+                                stresses.cell_areas(),
+                                {block_mesh.vertices, stresses.cell_means()},
+                                {end_vertices, stresses.trial_cell_means(d)},
                                 time,
                                 dt);
   }
@@ -344,15 +311,11 @@ namespace ndda
     TimerOutput::Scope scope(timer, "crack");
     // What the old dof numbering carries, before crack() empties the
     // DoFHandler: dof vectors by cell, the acceleration as M a over the
-    // lumped mass (a force vector must not be copied to both sides of a
-    // split node).
+    // lumped mass.
     const std::vector<types::global_dof_index> old_cell_dofs =
       fem.dof_map.cell_dofs;
-    const Vector<double> old_mass = fem.linear_system.lumped_mass();
-    Vector<double>       acceleration(kinematics.inertia_force);
-    for (unsigned int i = 0; i < acceleration.size(); ++i)
-      if (old_mass[i] > 0.)
-        acceleration[i] /= old_mass[i];
+    const Vector<double> acceleration =
+      fem.linear_system.lumped_acceleration(kinematics.inertia_force);
     const Vector<double>          old_displacement(displacement);
     const Vector<double>          old_velocity(kinematics.velocity);
     const std::vector<double>     bolt_forces = fem.bolts.axial_forces();
@@ -386,11 +349,11 @@ namespace ndda
     // recomputed only for cells that moved beyond the tolerance since
     // their last computation, as in any step. Then global matrices,
     // gravity, internal force, loaded faces, and M a on the new mesh.
-    fem.update_matrices(parameters, true, displacement, true);
+    fem.update_matrices(parameters, true, displacement, stresses, true);
     ++n_matrix_rebuilds;
     compute_internal_force();
-    kinematics.inertia_force = fem.linear_system.lumped_mass();
-    kinematics.inertia_force.scale(new_acceleration);
+    kinematics.inertia_force =
+      fem.linear_system.lumped_inertia_force(new_acceleration);
     external_force.reinit(fem.dof_handler.n_dofs());
     assemble_external_force(time, external_force);
     fem.linear_system.invalidate();
@@ -443,7 +406,8 @@ namespace ndda
       }
     build_element_matrices(false);
     if (parameters.control.time_integrator->needs_initial_acceleration())
-      compute_initial_acceleration();
+      kinematics.inertia_force =
+        fem.initial_inertia_force(time, displacement, internal_force);
     if (measure_points.waiting_for_first_sample())
       measure_points.record(time, displacement, kinematics.velocity, stresses);
     assemble_external_force(time, external_force);
@@ -612,25 +576,14 @@ namespace ndda
       }
 
     pcout << "ndda: scene '" << parameters.scene_name << "'\n"
-          << "  blocks: " << mesh.n_blocks()
-          << ", cells: " << mesh.get_triangulation().n_active_cells()
-          << ", vertices: " << mesh.get_triangulation().n_vertices()
-          << ", degrees of freedom: " << fem.dof_handler.n_dofs() << " ("
-          << fem.fe->base_element(0).get_name() << ")\n"
-          << "  constrained nodes: "
-          << fem.constraints.constrained_nodes().size()
-          << ", output: " << directory << std::endl;
+          << fem.summary() << ", output: " << directory << std::endl;
 
     Timer                       wall;
     postprocess::ProgressReport progress(parameters.output.progress_interval);
-    const double                end_time = parameters.control.end_time;
-    const double                interval = parameters.output.interval;
-    const auto reached = [](const double t, const double target) {
-      return t >= target * (1. - 1e-12);
-    };
+    postprocess::OutputSchedule schedule(parameters.output.interval,
+                                         parameters.control.end_time);
     output_results();
-    next_output_time = interval;
-    while (!reached(time, end_time))
+    while (!schedule.finished(time))
       {
         try
           {
@@ -643,20 +596,15 @@ namespace ndda
             write_statistics();
             throw;
           }
-        if (reached(time, next_output_time) || reached(time, end_time))
-          {
-            output_results();
-            if (interval > 0)
-              while (next_output_time <= time * (1. + 1e-12))
-                next_output_time += interval;
-          }
-        if (progress.due(wall.wall_time(), reached(time, end_time)))
+        if (schedule.frame_due(time))
+          output_results();
+        if (progress.due(wall.wall_time(), schedule.finished(time)))
           {
             progress.print(console,
                            wall.wall_time(),
                            {step_number,
                             time,
-                            end_time,
+                            parameters.control.end_time,
                             step_controller.last_step_size(),
                             step_controller.n_total_cuts()});
             write_statistics();

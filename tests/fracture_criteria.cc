@@ -569,8 +569,8 @@ namespace
 
     // subsection Fracture from a .prm text.
     ParameterHandler prm;
-    Parameters::declare_parameters(prm);
-    Parameters parameters;
+    ndda::parameters::Fracture::declare_parameters(prm);
+    ndda::parameters::Fracture parameters;
     parameters.parse_parameters(prm);
     std::cout << "  defaults: Criterion = " << parameters.criterion_name
               << ", Edge stress = "

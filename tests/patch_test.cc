@@ -55,11 +55,11 @@ main(int argc, char **argv)
   // The entry that chooses the element, its name in the output and in the
   // keys of doc/validation.md.
   const std::vector<std::array<std::string, 3>> elements = {
-    {"Element degree = 1", "P1", "p1"},
-    {"Element degree = 2", "P2", "p2"},
-    {"Finite element = FE_SimplexP_Bubbles(2)",
-     "FE_SimplexP_Bubbles(2)",
-     "p2_bubbles"}};
+    {{"Element degree = 1", "P1", "p1"}},
+    {{"Element degree = 2", "P2", "p2"}},
+    {{"Finite element = FE_SimplexP_Bubbles(2)",
+      "FE_SimplexP_Bubbles(2)",
+      "p2_bubbles"}}};
   for (const std::string plane : {"plane stress", "plane strain"})
     for (const auto &[entry, element, element_key] : elements)
       {

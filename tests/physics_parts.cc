@@ -69,6 +69,59 @@ NDDA_REGISTER_PLUGIN(ConstitutiveLaw,
                      "scaled elasticity",
                      "Linear elasticity times Factor (a test law).")
 
+/**
+ * A law whose tangent depends on the stress: linear elasticity, times Ratio
+ * wherever sigma_xx exceeds Threshold (a test law).
+ */
+class StressSoftening : public ConstitutiveLaw
+{
+public:
+  static void
+  declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Threshold", "1e6", Patterns::Double(), "Pa");
+    prm.declare_entry("Ratio", "0.25", Patterns::Double(0.), "");
+  }
+
+  void
+  parse_parameters(ParameterHandler &prm) override
+  {
+    threshold = prm.get_double("Threshold");
+    ratio     = prm.get_double("Ratio");
+  }
+
+  SymmetricTensor<4, 2>
+  tangent(const parameters::Material &m, const bool plane_strain) const override
+  {
+    return isotropic_elasticity_tensor(m.youngs_modulus,
+                                       m.poissons_ratio,
+                                       plane_strain);
+  }
+
+  bool
+  tangent_depends_on_stress() const override
+  {
+    return true;
+  }
+
+  SymmetricTensor<4, 2>
+  point_tangent(const parameters::Material  &m,
+                const bool                   plane_strain,
+                const SymmetricTensor<2, 2> &stress) const override
+  {
+    return (stress[0][0] > threshold ? ratio : 1.) * tangent(m, plane_strain);
+  }
+
+private:
+  double threshold = 1e6, ratio = 0.25;
+};
+
+NDDA_REGISTER_PLUGIN(ConstitutiveLaw,
+                     StressSoftening,
+                     "stress softening",
+                     "Elasticity softened by Ratio above a stress (a test "
+                     "law).")
+
 namespace
 {
   const double E = 10e9, nu = 0.25, thickness = 0.5;
@@ -193,6 +246,72 @@ namespace
               << " Pa, strain energy = " << energy << " J" << std::endl;
   }
 
+  /**
+   * The element stiffness of a law whose tangent depends on the stress:
+   * d^T K d of a stretch is t A eps C_xxxx(sigma) eps with the tangent at
+   * each point's stress, and every cell is rebuilt though none moved.
+   */
+  void
+  check_point_tangents(const std::string &element_name)
+  {
+    Square       square(element_name,
+                  read_materials("  set Constitutive law = stress softening\n"
+                                       "  subsection stress softening\n"
+                                       "    set Threshold = 1e6\n"
+                                       "    set Ratio = 0.25\n"
+                                       "  end\n"));
+    const double eps            = 1e-4;
+    const auto   d              = square.interpolate([&](const Point<2> &x) {
+      return Tensor<1, 2>({eps * x[0], 0.});
+    });
+    const auto   stretch_energy = [&]() {
+      double             dKd = 0;
+      const unsigned int n   = square.dof_map.dofs_per_cell;
+      for (unsigned int c = 0; c < square.stresses.n_cells(); ++c)
+        {
+          const auto *cell_dofs = square.dof_map.dofs_of_cell(c);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              dKd += d[cell_dofs[i]] * square.cache[c].stiffness(i, j) *
+                     d[cell_dofs[j]];
+        }
+      return dKd;
+    };
+    const double elastic = thickness * eps * eps * E / (1 - nu * nu);
+    for (const double sigma_xx : {2e6, 0.})
+      {
+        for (unsigned int c = 0; c < square.stresses.n_cells(); ++c)
+          for (auto &sigma : square.stresses[c])
+            sigma[0][0] = sigma_xx;
+        const unsigned int n_computed =
+          square.cache.update(square.dof_handler,
+                              square.mapping,
+                              square.materials,
+                              true,
+                              1e9,
+                              &square.stresses.cells());
+        check(n_computed == square.stresses.n_cells(),
+              "every cell rebuilt with a stress-dependent tangent");
+        const double expected = (sigma_xx > 1e6 ? 0.25 : 1.) * elastic;
+        check(std::abs(stretch_energy() - expected) < 1e-9 * expected,
+              "d^T K d with the tangent at the stress");
+        std::cout << element_name
+                  << ", stress softening at sigma_xx = " << sigma_xx
+                  << " Pa: d^T K d = " << stretch_energy() << " J (elastic "
+                  << elastic << " J)" << std::endl;
+      }
+    // A law whose tangent does not depend on the stress rebuilds only the
+    // cells that moved: none.
+    Square unmoved(element_name, read_materials(""));
+    check(unmoved.cache.update(unmoved.dof_handler,
+                               unmoved.mapping,
+                               unmoved.materials,
+                               true,
+                               1e9,
+                               &unmoved.stresses.cells()) == 0,
+          "no cell rebuilt with a constant tangent");
+  }
+
   /** An infinitesimal rotation turns an initial stress. */
   void
   check_rotation(const std::string &element_name)
@@ -276,8 +395,10 @@ main(int argc, char **argv)
   check(std::find(names.begin(), names.end(), "linear elasticity") !=
             names.end() &&
           std::find(names.begin(), names.end(), "scaled elasticity") !=
+            names.end() &&
+          std::find(names.begin(), names.end(), "stress softening") !=
             names.end(),
-        "both laws registered");
+        "the laws registered");
   for (const std::string element : {"FE_SimplexP(1)", "FE_SimplexP(2)"})
     {
       check_stretch(element, "", 1.);
@@ -288,6 +409,7 @@ main(int argc, char **argv)
                     "  end\n",
                     2.);
       check_rotation(element);
+      check_point_tangents(element);
       check_solves(element);
     }
   return 0;

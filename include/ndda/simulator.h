@@ -338,9 +338,6 @@ namespace ndda
     /** Internal force and strain energy of the present stresses. */
     void
     compute_internal_force();
-    /** M a0 = f_ext(0) - f_int, for Newmark. */
-    void
-    compute_initial_acceleration();
     /**
      * Everything a step needs before its first attempt: on the first step
      * the initial acceleration, measure points and external force; on
@@ -456,7 +453,6 @@ namespace ndda
 
     StepReport                       step_report;
     TableHandler                     statistics;
-    double                           next_output_time = 0;
     postprocess::VisualizationWriter visualization;
   };
 } // namespace ndda

@@ -120,11 +120,11 @@ namespace ndda
     {
       // The (vertex, block) pairs that bonded contacts tie together.
       std::set<std::pair<unsigned int, unsigned int>> bonded_to;
-      for (const Contact &c : contacts)
+      for (const ContactPair &c : contacts)
         if (c.bonded)
           bonded_to.emplace(c.options[c.chosen].vertex,
                             edges[c.options[c.chosen].edge].block);
-      for (Contact &c : contacts)
+      for (ContactPair &c : contacts)
         {
           c.shadowed = false;
           if (!bonded_to.empty() && !c.bonded && c.vertex_a == invalid)

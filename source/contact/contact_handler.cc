@@ -94,10 +94,10 @@ namespace ndda
       add_vertex_edge_contacts(vertices, vertex_edge);
       add_vertex_vertex_contacts(vertices, candidates, vertex_edge);
 
-      for (Contact &c : contacts)
+      for (ContactPair &c : contacts)
         transfer(c, vertices);
       shadow_bonded_joints();
-      for (Contact &c : contacts)
+      for (ContactPair &c : contacts)
         {
           if (c.bonded)
             c.bond_length = bond_length(vertices,
@@ -121,7 +121,7 @@ namespace ndda
     ContactHandler::restart_step()
     {
       statistics.n_iterations = 0;
-      for (Contact &c : contacts)
+      for (ContactPair &c : contacts)
         {
           c.flips                        = 0;
           c.scale                        = 1;
@@ -136,7 +136,7 @@ namespace ndda
     bool
     ContactHandler::has_springs() const
     {
-      for (const Contact &c : contacts)
+      for (const ContactPair &c : contacts)
         if (c.state != State::open)
           return true;
       return false;
@@ -153,7 +153,7 @@ namespace ndda
       // the sparse matrix row by row (one search per row, not per entry);
       // one block for all contacts, so that it is allocated once.
       dealii::FullMatrix<double> k;
-      for (const Contact &c : contacts)
+      for (const ContactPair &c : contacts)
         {
           if (c.state == State::vertex_spring)
             {
@@ -191,7 +191,7 @@ namespace ndda
       // that makes their work equal to the spring energy they release
       // (scale, see update_states()).
       force = 0;
-      for (const Contact &c : contacts)
+      for (const ContactPair &c : contacts)
         {
           const bool closed_at_start =
             c.start_chosen != invalid &&
@@ -229,7 +229,8 @@ namespace ndda
 
 
     bool
-    ContactHandler::update_scale(Contact &c, const dealii::Vector<double> &d)
+    ContactHandler::update_scale(ContactPair                  &c,
+                                 const dealii::Vector<double> &d)
     {
       // A spring that engages or lets go within the step acts for part of
       // it only. With the average of start and end forces (Newmark), the
@@ -270,7 +271,7 @@ namespace ndda
     ContactHandler::update_states(const dealii::Vector<double> &d)
     {
       bool changed = false;
-      for (Contact &c : contacts)
+      for (ContactPair &c : contacts)
         if (c.chosen == invalid)
           changed = resolve_pair(c, d) || changed;
         else if (!c.shadowed)
@@ -281,7 +282,8 @@ namespace ndda
 
 
     bool
-    ContactHandler::update_state(Contact &c, const dealii::Vector<double> &d)
+    ContactHandler::update_state(ContactPair                  &c,
+                                 const dealii::Vector<double> &d)
     {
       const ContactLaw &law = *settings.law;
       const Option     &o   = c.options[c.chosen];
@@ -329,7 +331,7 @@ namespace ndda
     ContactHandler::max_penetration(const dealii::Vector<double> &d) const
     {
       double p = 0;
-      for (const Contact &c : contacts)
+      for (const ContactPair &c : contacts)
         if (c.chosen != invalid &&
             (c.state == State::locked || c.state == State::sliding))
           p = std::max(p, -c.options[c.chosen].normal_gap(d) - c.offset);
@@ -361,7 +363,7 @@ namespace ndda
           applied *= 0.5;
         }
       end_force.reinit(d.size());
-      for (const Contact &c : contacts)
+      for (const ContactPair &c : contacts)
         {
           if (c.vertex_a != invalid)
             ++statistics.n_vertex_vertex;
@@ -382,7 +384,7 @@ namespace ndda
 
 
     void
-    ContactHandler::end_vertex_spring(const Contact                &c,
+    ContactHandler::end_vertex_spring(const ContactPair            &c,
                                       const dealii::Vector<double> &d)
     {
       const double kn = settings.normal_stiffness;
@@ -403,7 +405,7 @@ namespace ndda
 
 
     void
-    ContactHandler::end_closed_contact(const Contact                &c,
+    ContactHandler::end_closed_contact(const ContactPair            &c,
                                        const dealii::Vector<double> &d)
     {
       ++statistics.n_closed;

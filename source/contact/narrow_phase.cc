@@ -220,7 +220,7 @@ namespace ndda
     {
       for (const auto &[v, e] : vertex_edge)
         {
-          Contact c;
+          ContactPair c;
           c.options.push_back(make_option(vertices, v, e));
           c.friction = std::min(edge_friction[e], vertex_friction[v]);
           contacts.push_back(std::move(c));
@@ -327,7 +327,7 @@ namespace ndda
                                  vertex_edge.end(),
                                  std::make_pair(v, e)))
             continue;
-          Contact face;
+          ContactPair face;
           face.options.push_back(make_option(vertices, v, e));
           const Option &o = face.options[0];
           if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
@@ -347,7 +347,7 @@ namespace ndda
       const unsigned int           a,
       const unsigned int           b)
     {
-      Contact c;
+      ContactPair c;
       c.vertex_a = a;
       c.vertex_b = b;
       for (const unsigned int e : edges_at_vertex[b])

@@ -47,7 +47,7 @@ namespace ndda
 
 
     void
-    ContactHandler::recall(Contact                     &c,
+    ContactHandler::recall(ContactPair                 &c,
                            const std::vector<Point<2>> &vertices) const
     {
       const auto restore = [&c](const Memory &m) {
@@ -101,7 +101,7 @@ namespace ndda
 
 
     void
-    ContactHandler::transfer(Contact                     &c,
+    ContactHandler::transfer(ContactPair                 &c,
                              const std::vector<Point<2>> &vertices) const
     {
       c.state  = State::open;

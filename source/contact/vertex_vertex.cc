@@ -15,7 +15,7 @@ namespace ndda
   namespace contact
   {
     std::vector<unsigned int>
-    ContactHandler::entered_options(const Contact                &c,
+    ContactHandler::entered_options(const ContactPair            &c,
                                     const dealii::Vector<double> &d) const
     {
       std::vector<unsigned int> inside;
@@ -41,7 +41,7 @@ namespace ndda
 
 
     unsigned int
-    ContactHandler::entrance_option(const Contact                   &c,
+    ContactHandler::entrance_option(const ContactPair               &c,
                                     const std::vector<unsigned int> &inside,
                                     const dealii::Vector<double>    &d) const
     {
@@ -85,7 +85,7 @@ namespace ndda
 
 
     unsigned int
-    ContactHandler::sliding_option(const Contact                &c,
+    ContactHandler::sliding_option(const ContactPair            &c,
                                    const dealii::Vector<double> &d) const
     {
       // Thesis 6.2: after a solve with the temporary spring, the vertex
@@ -124,7 +124,8 @@ namespace ndda
 
 
     bool
-    ContactHandler::resolve_pair(Contact &c, const dealii::Vector<double> &d)
+    ContactHandler::resolve_pair(ContactPair                  &c,
+                                 const dealii::Vector<double> &d)
     {
       unsigned int option = invalid;
       if (c.state == State::vertex_spring)

@@ -46,7 +46,7 @@ namespace ndda
 
     std::vector<std::array<unsigned int, 2>>
     EdgeFailureCheck::check(
-      const Parameters                               &parameters,
+      const parameters::Fracture                     &parameters,
       const std::vector<std::array<unsigned int, 3>> &triangles,
       const std::vector<double>                      &cell_area,
       const BlockState                               &start,

@@ -100,11 +100,19 @@ namespace ndda
 
 
 
+  } // namespace fracture
+
+
+
+  namespace parameters
+  {
+    using namespace dealii;
+
     void
-    Parameters::declare_parameters(ParameterHandler &prm)
+    Fracture::declare_parameters(ParameterHandler &prm)
     {
       const std::string documentation =
-        FractureCriterionRegistry::documentation(
+        fracture::FractureCriterionRegistry::documentation(
           "Which criterion decides when, within a step, an interior edge of "
           "a block cracks (thesis chapter 5, doc/fracture.md). Each "
           "criterion reads its own entries from the subsection of its "
@@ -113,7 +121,8 @@ namespace ndda
       {
         prm.declare_entry("Criterion",
                           "Mohr-Coulomb",
-                          Patterns::Selection(fracture_criterion_selection()),
+                          Patterns::Selection(
+                            fracture::fracture_criterion_selection()),
                           documentation);
         prm.declare_entry(
           "Edge stress",
@@ -147,7 +156,7 @@ namespace ndda
           "step; when it is reached the step is accepted with the edges "
           "that still fail, and the statistics file says so ('Crack limit "
           "hit').");
-        FractureCriterionRegistry::declare_parameters(prm);
+        fracture::FractureCriterionRegistry::declare_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -155,21 +164,22 @@ namespace ndda
 
 
     void
-    Parameters::parse_parameters(ParameterHandler &prm)
+    Fracture::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Fracture");
       {
         edge_stress_method = prm.get("Edge stress") == "nodal average" ?
-                               EdgeStressMethod::nodal_average :
-                               EdgeStressMethod::cell_average;
+                               fracture::EdgeStressMethod::nodal_average :
+                               fracture::EdgeStressMethod::cell_average;
         criterion_name     = prm.get("Criterion");
         split_edges        = prm.get_bool("Split edges");
         crack_window       = prm.get_double("Crack window");
         max_crack_events   = prm.get_integer("Maximum crack events per step");
         criterion =
-          FractureCriterionRegistry::create_and_parse(criterion_name, prm);
+          fracture::FractureCriterionRegistry::create_and_parse(criterion_name,
+                                                                prm);
       }
       prm.leave_subsection();
     }
-  } // namespace fracture
+  } // namespace parameters
 } // namespace ndda

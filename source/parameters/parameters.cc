@@ -328,8 +328,8 @@ namespace ndda
       BoundaryConditions::declare_parameters(prm, names.boundary_conditions);
       Bolts::declare_parameters(prm, names.bolts);
       Output::declare_parameters(prm);
-      fracture::Parameters::declare_parameters(prm);
-      postprocess::Parameters::declare_parameters(prm);
+      Fracture::declare_parameters(prm);
+      Postprocess::declare_parameters(prm);
     }
 
 

@@ -68,10 +68,10 @@ namespace ndda
      */
     template <int dim, typename CellData>
     void
-    add_operators(const FEValues<dim>           &values,
-                  const SymmetricTensor<4, dim> &C,
-                  const double                   t,
-                  CellData                      &d)
+    add_operators(const FEValues<dim>                        &values,
+                  const std::vector<SymmetricTensor<4, dim>> &C,
+                  const double                                t,
+                  CellData                                   &d)
     {
       const FEValuesExtractors::Vector u(0);
       const unsigned int               n_dofs = d.stiffness.m();
@@ -87,7 +87,7 @@ namespace ndda
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const SymmetricTensor<2, dim> Ceps_i =
-                C * d.strain[q * n_dofs + i];
+                C[q] * d.strain[q * n_dofs + i];
               for (unsigned int j = 0; j < n_dofs; ++j)
                 d.stiffness(i, j) +=
                   (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
@@ -111,11 +111,13 @@ namespace ndda
 
   template <int dim>
   unsigned int
-  ElementCache<dim>::update(const DoFHandler<dim>       &dof_handler,
-                            const Mapping<dim>          &mapping,
-                            const parameters::Materials &materials,
-                            const bool                   only_moved_cells,
-                            const double                 tolerance)
+  ElementCache<dim>::update(
+    const DoFHandler<dim>                                   &dof_handler,
+    const Mapping<dim>                                      &mapping,
+    const parameters::Materials                             &materials,
+    const bool                                               only_moved_cells,
+    const double                                             tolerance,
+    const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses)
   {
     const auto        &fe     = dof_handler.get_fe();
     const unsigned int n_dofs = fe.n_dofs_per_cell();
@@ -134,6 +136,11 @@ namespace ndda
     tangents.clear();
     for (const auto &material : materials.materials)
       tangents.push_back(law->tangent(material, materials.plane_strain));
+    // A tangent that depends on the stress changes wherever the stress
+    // does: every cell is computed, with the tangent at each point.
+    const bool point_tangents =
+      law->tangent_depends_on_stress() && stresses != nullptr;
+    std::vector<SymmetricTensor<4, dim>> C(n_q_points);
 
     FEValues<dim> fe_values(mapping,
                             fe,
@@ -150,15 +157,21 @@ namespace ndda
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         CellData &d = data[cell->active_cell_index()];
-        if (only_moved_cells && !d.vertices.empty() &&
+        if (only_moved_cells && !point_tangents && !d.vertices.empty() &&
             !moved_beyond(cell, d.vertices, tolerance * d.diameter))
           continue;
         ++n_computed;
         computed_cells.push_back(cell->active_cell_index());
         fe_values.reinit(cell);
         mass_values.reinit(cell);
-        const auto &material = materials.materials[cell->material_id()];
-        const auto &C        = tangents[cell->material_id()];
+        const auto        &material = materials.materials[cell->material_id()];
+        const unsigned int c        = cell->active_cell_index();
+        for (unsigned int q = 0; q < n_q_points; ++q)
+          C[q] = point_tangents && !(*stresses)[c].empty() ?
+                   law->point_tangent(material,
+                                      materials.plane_strain,
+                                      (*stresses)[c][q]) :
+                   tangents[cell->material_id()];
 
         d.stiffness.reinit(n_dofs, n_dofs);
         d.mass.reinit(n_dofs, n_dofs);
@@ -183,6 +196,16 @@ namespace ndda
         d.diameter = cell->diameter();
       }
     return n_computed;
+  }
+
+
+
+  template <int dim>
+  bool
+  ElementCache<dim>::tangent_depends_on_stress(
+    const parameters::Materials &materials)
+  {
+    return law_of(materials)->tangent_depends_on_stress();
   }
 
 

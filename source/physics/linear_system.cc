@@ -293,6 +293,29 @@ namespace ndda
 
 
 
+  Vector<double>
+  LinearSystem::lumped_acceleration(const Vector<double> &inertia_force) const
+  {
+    const Vector<double> mass = lumped_mass();
+    Vector<double>       a(inertia_force);
+    for (unsigned int i = 0; i < a.size(); ++i)
+      if (mass[i] > 0.)
+        a[i] /= mass[i];
+    return a;
+  }
+
+
+
+  Vector<double>
+  LinearSystem::lumped_inertia_force(const Vector<double> &a) const
+  {
+    Vector<double> force = lumped_mass();
+    force.scale(a);
+    return force;
+  }
+
+
+
   void
   LinearSystem::invalidate()
   {

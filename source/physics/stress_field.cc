@@ -158,6 +158,34 @@ namespace ndda
 
 
 
+  std::vector<StressField::Stress>
+  StressField::trial_cell_means(const Vector<double> &d) const
+  {
+    std::vector<Stress> means(stress.size());
+    std::vector<Stress> sigma;
+    for (unsigned int c = 0; c < stress.size(); ++c)
+      {
+        sigma = stress[c];
+        advance(c, d, sigma);
+        means[c] = mean(c, sigma);
+      }
+    return means;
+  }
+
+
+
+  std::vector<double>
+  StressField::cell_areas() const
+  {
+    std::vector<double> area(stress.size());
+    for (unsigned int c = 0; c < stress.size(); ++c)
+      for (const double w : (*element_cache)[c].weight)
+        area[c] += w;
+    return area;
+  }
+
+
+
   double
   StressField::internal_force(Vector<double> &force) const
   {

@@ -31,7 +31,7 @@ namespace ndda
     void
     link_plugin_FractureStatistics();
     void
-    link_plugin_ContactStatistics();
+    link_plugin_ContactColumns();
     void
     link_plugin_WallTime();
 
@@ -46,7 +46,7 @@ namespace ndda
       link_plugin_TimeStepStatistics();
       link_plugin_EnergyStatistics();
       link_plugin_FractureStatistics();
-      link_plugin_ContactStatistics();
+      link_plugin_ContactColumns();
       link_plugin_WallTime();
     }
 
@@ -99,22 +99,31 @@ namespace ndda
 
 
 
+  } // namespace postprocess
+
+
+
+  namespace parameters
+  {
+    using namespace dealii;
+
     void
-    Parameters::declare_parameters(ParameterHandler &prm)
+    Postprocess::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Postprocess");
       {
         prm.declare_entry(
           "List of postprocessors",
-          default_list,
-          Patterns::MultipleSelection(PostprocessorRegistry::joined_names()),
-          PostprocessorRegistry::documentation(
+          postprocess::default_list,
+          Patterns::MultipleSelection(
+            postprocess::PostprocessorRegistry::joined_names()),
+          postprocess::PostprocessorRegistry::documentation(
             "What a run writes: VTU fields (at every output time) and "
             "groups of columns of the statistics file (after every step), "
             "each a plugin (include/ndda/postprocess/postprocessor.h), in "
             "the order given. Each reads its own entries from the "
             "subsection of its name. The postprocessors:"));
-        PostprocessorRegistry::declare_parameters(prm);
+        postprocess::PostprocessorRegistry::declare_parameters(prm);
       }
       prm.leave_subsection();
     }
@@ -122,7 +131,7 @@ namespace ndda
 
 
     void
-    Parameters::parse_parameters(ParameterHandler &prm)
+    Postprocess::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Postprocess");
       {
@@ -136,10 +145,10 @@ namespace ndda
                                    "' is listed twice. Give each "
                                    "postprocessor once."));
             postprocessors.push_back(
-              PostprocessorRegistry::create_and_parse(name, prm));
+              postprocess::PostprocessorRegistry::create_and_parse(name, prm));
           }
       }
       prm.leave_subsection();
     }
-  } // namespace postprocess
+  } // namespace parameters
 } // namespace ndda

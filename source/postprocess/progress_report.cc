@@ -12,7 +12,7 @@ namespace ndda
     void
     ProgressReport::print(std::ostream &out,
                           const double  wall_time,
-                          const State  &state)
+                          const Line   &state)
     {
       const double steps_since = state.step - last_step;
       const double per_step =

@@ -79,7 +79,7 @@ namespace ndda
 
 
     /** Open-close iterations, contact counts and energies. */
-    class ContactStatistics : public Postprocessor
+    class ContactColumns : public Postprocessor
     {
     public:
       void
@@ -152,7 +152,7 @@ namespace ndda
       "'Failing edges' (in the step's last check).")
     NDDA_REGISTER_PLUGIN(
       Postprocessor,
-      ContactStatistics,
+      ContactColumns,
       "contact",
       "With contact, statistics columns 'Open-close iterations', "
       "'Open-close cuts', 'Contact candidates', 'Closed contacts', "

@@ -8,6 +8,7 @@
 #include <ndda/scene/discretization.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace ndda
 {
@@ -104,15 +105,22 @@ namespace ndda
     Discretization::update_matrices(const parameters::Parameters &parameters,
                                     const bool            only_moved_cells,
                                     const Vector<double> &displacement,
+                                    const StressField    &stresses,
                                     const bool            always_assemble)
     {
       const double tolerance = parameters.control.matrix_update_tolerance;
-      if (only_moved_cells &&
+      // A tangent that depends on the stress is rebuilt on the first step
+      // too (setup_dofs() did not know the initial stresses).
+      const bool recompute =
+        only_moved_cells ||
+        ElementCache<2>::tangent_depends_on_stress(parameters.materials);
+      if (recompute &&
           element_cache.update(dof_handler,
                                mapping,
                                parameters.materials,
                                tolerance > 0.,
-                               tolerance) == 0 &&
+                               tolerance,
+                               &stresses.cells()) == 0 &&
           !always_assemble)
         return false;
       assemble(displacement);
@@ -144,6 +152,39 @@ namespace ndda
       loads.add(t, force);
       // Bolt pretension pulls the anchors together.
       bolts.add_pretension(displacement, force);
+    }
+
+
+
+    std::string
+    Discretization::summary() const
+    {
+      std::ostringstream out;
+      out << "  blocks: " << mesh.n_blocks()
+          << ", cells: " << mesh.get_triangulation().n_active_cells()
+          << ", vertices: " << mesh.get_triangulation().n_vertices()
+          << ", degrees of freedom: " << dof_handler.n_dofs() << " ("
+          << fe->base_element(0).get_name() << ")\n"
+          << "  constrained nodes: " << constraints.constrained_nodes().size();
+      return out.str();
+    }
+
+
+
+    Vector<double>
+    Discretization::initial_inertia_force(
+      const double          t,
+      const Vector<double> &displacement,
+      const Vector<double> &internal_force) const
+    {
+      Vector<double> rhs;
+      external_force(t, displacement, rhs);
+      rhs -= internal_force;
+      Vector<double> acceleration;
+      linear_system.solve_mass(rhs, constraints, acceleration);
+      Vector<double> inertia_force(acceleration.size());
+      linear_system.get_mass_matrix().vmult(inertia_force, acceleration);
+      return inertia_force;
     }
   } // namespace scene
 } // namespace ndda

@@ -6,6 +6,7 @@
 #include <ndda/geometry/block_mesh.h>
 #include <ndda/mesh/boundary_edges.h>
 #include <ndda/scene/scene.h>
+#include <ndda/time/time_integrator.h>
 
 #include <cmath>
 #include <memory>
@@ -257,6 +258,19 @@ namespace ndda
       limits.max_open_close_iterations =
         parameters.contact.max_open_close_iterations;
       return limits;
+    }
+
+
+
+    contact::OpenCloseSolver::Settings
+    open_close_settings(const parameters::Parameters &parameters)
+    {
+      contact::OpenCloseSolver::Settings settings;
+      settings.max_iterations   = parameters.contact.max_open_close_iterations;
+      settings.reuse_iterations = parameters.contact.reuse_iterations;
+      settings.average_contact_forces =
+        parameters.control.time_integrator->averages_contact_forces();
+      return settings;
     }
   } // namespace scene
 } // namespace ndda

@@ -223,7 +223,7 @@ namespace ndda
        * state, anchor, sliding direction, friction and bond length are the
        * ContactState the contact law sees.
        */
-      struct Contact : ContactState
+      struct ContactPair : ContactState
       {
         /// Potential (vertex, edge) pairs: one for a vertex-edge contact,
         /// the edges at either vertex for a vertex-vertex pair.
@@ -414,7 +414,7 @@ namespace ndda
 
       /** Carry the memory of the last step over to contact @p c. */
       void
-      transfer(Contact &c, const std::vector<Point<2>> &vertices) const;
+      transfer(ContactPair &c, const std::vector<Point<2>> &vertices) const;
 
       /**
        * The state, option and anchor of the last step's end for contact
@@ -422,7 +422,7 @@ namespace ndda
        * vertex on a neighbouring edge it has slid over from.
        */
       void
-      recall(Contact &c, const std::vector<Point<2>> &vertices) const;
+      recall(ContactPair &c, const std::vector<Point<2>> &vertices) const;
 
       /**
        * A neighbouring edge of @p edge, across a (nearly) straight vertex,
@@ -496,7 +496,7 @@ namespace ndda
        * true if it changed.
        */
       bool
-      resolve_pair(Contact &c, const dealii::Vector<double> &d);
+      resolve_pair(ContactPair &c, const dealii::Vector<double> &d);
 
       /**
        * The options of pair @p c whose vertex has entered the other's
@@ -504,20 +504,22 @@ namespace ndda
        * within their lengths.
        */
       std::vector<unsigned int>
-      entered_options(const Contact &c, const dealii::Vector<double> &d) const;
+      entered_options(const ContactPair            &c,
+                      const dealii::Vector<double> &d) const;
 
       /** Choose the entrance edge of a penetrating vertex-vertex pair among
        * the options @p inside of the vertices that entered; invalid for
        * genuine indeterminacy (revised method). */
       unsigned int
-      entrance_option(const Contact                   &c,
+      entrance_option(const ContactPair               &c,
                       const std::vector<unsigned int> &inside,
                       const dealii::Vector<double>    &d) const;
 
       /** The option a temporary vertex spring resolves to (6.2), or
        * invalid if the motion is symmetric. */
       unsigned int
-      sliding_option(const Contact &c, const dealii::Vector<double> &d) const;
+      sliding_option(const ContactPair            &c,
+                     const dealii::Vector<double> &d) const;
       /** @} */
 
       /**
@@ -525,26 +527,26 @@ namespace ndda
        * else the contact law; returns true if its state changed.
        */
       bool
-      update_state(Contact &c, const dealii::Vector<double> &d);
+      update_state(ContactPair &c, const dealii::Vector<double> &d);
 
       /** Update the scale of a contact that closes or opens within the
        * step; true if it changed noticeably. */
       bool
-      update_scale(Contact &c, const dealii::Vector<double> &d);
+      update_scale(ContactPair &c, const dealii::Vector<double> &d);
 
       /**
        * end_step() for a temporary vertex spring: its memory, energy and
        * force at the step's end.
        */
       void
-      end_vertex_spring(const Contact &c, const dealii::Vector<double> &d);
+      end_vertex_spring(const ContactPair &c, const dealii::Vector<double> &d);
 
       /**
        * end_step() for a closed contact: its memory, energy, force at the
        * step's end and statistics.
        */
       void
-      end_closed_contact(const Contact &c, const dealii::Vector<double> &d);
+      end_closed_contact(const ContactPair &c, const dealii::Vector<double> &d);
 
       ContactSettings                        settings;
       const DofMap                          *dofs = nullptr;
@@ -554,7 +556,7 @@ namespace ndda
       std::vector<std::vector<unsigned int>> edges_at_vertex;
       /// Mean boundary edge length of every block (m).
       std::vector<double>                                block_edge_length;
-      std::vector<Contact>                               contacts;
+      std::vector<ContactPair>                           contacts;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
         memory;

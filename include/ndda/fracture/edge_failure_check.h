@@ -86,7 +86,7 @@ namespace ndda
        * failure of the run.
        */
       std::vector<std::array<unsigned int, 2>>
-      check(const Parameters                               &parameters,
+      check(const parameters::Fracture                     &parameters,
             const std::vector<std::array<unsigned int, 3>> &triangles,
             const std::vector<double>                      &cell_area,
             const BlockState                               &start,

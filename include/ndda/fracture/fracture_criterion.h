@@ -190,15 +190,22 @@ namespace ndda
     std::unique_ptr<FractureCriterion>
     create_fracture_criterion(const std::string &name);
 
+  } // namespace fracture
+
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
     /**
      * The parameters of `subsection Fracture` that fracture itself reads:
      * which criterion (and the criterion's own parameters) and how edge
      * stresses are formed.
      */
-    struct Parameters
+    struct Fracture
     {
       /// `set Edge stress = cell average | nodal average`.
-      EdgeStressMethod edge_stress_method = EdgeStressMethod::cell_average;
+      fracture::EdgeStressMethod edge_stress_method =
+        fracture::EdgeStressMethod::cell_average;
       /// Name of the selected criterion, `set Criterion = ...`.
       std::string criterion_name;
       /// Split failing edges (else only count them).
@@ -210,7 +217,7 @@ namespace ndda
       unsigned int max_crack_events = 50;
       /// The selected criterion with its parameters read; stateless, so it
       /// may be shared.
-      std::shared_ptr<const FractureCriterion> criterion;
+      std::shared_ptr<const fracture::FractureCriterion> criterion;
 
       /**
        * Declare, in `subsection Fracture` (entered and left here), the
@@ -225,7 +232,7 @@ namespace ndda
       parse_parameters(ParameterHandler &prm);
     };
 
-  }   // namespace fracture
+  } // namespace parameters
 } // namespace ndda
 
 /**

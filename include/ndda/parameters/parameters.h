@@ -86,17 +86,17 @@ namespace ndda
      */
     struct Parameters
     {
-      std::string             scene_name;
-      Control                 control;
-      Contact                 contact;
-      Materials               materials;
-      Geometry                geometry;
-      Loads                   loads;
-      BoundaryConditions      boundary_conditions;
-      Bolts                   bolts;
-      Output                  output;
-      fracture::Parameters    fracture;
-      postprocess::Parameters postprocess;
+      std::string        scene_name;
+      Control            control;
+      Contact            contact;
+      Materials          materials;
+      Geometry           geometry;
+      Loads              loads;
+      BoundaryConditions boundary_conditions;
+      Bolts              bolts;
+      Output             output;
+      Fracture           fracture;
+      Postprocess        postprocess;
 
       /** The name lists that decide which subsections exist. */
       struct NameLists

@@ -23,13 +23,19 @@ namespace ndda
    * updated by update_stress() with the strain increment of the step's
    * displacement increment d.
    *
-   * The tangent is asked once per material when element matrices are
-   * (re)built; the element stiffness is t int B^T C B with it (thesis
-   * 3.24). A law whose tangent depends on the stress state (plasticity,
-   * damage) needs element matrices per quadrature point state, which the
-   * element cache does not have yet: such a law gives its elastic tangent
-   * here, and the open-close iteration then solves with it (a modified
-   * Newton step per time step).
+   * The element stiffness is t int B^T C B (thesis 3.24) with C the
+   * tangent at each quadrature point. A law whose tangent does not depend
+   * on the stress (the default) gives one tangent per material, and
+   * element matrices are rebuilt only for cells that moved. A law whose
+   * tangent depends on the stress (plasticity, damage, hardening) says so
+   * in tangent_depends_on_stress() and gives the tangent at a point's
+   * stress in point_tangent(): every cell's element matrices are then
+   * rebuilt from the stresses of the step's start at every step (and the
+   * system refactorized), as step-42 assembles its tangent from the
+   * present state. The step's linear system is then the linearization at
+   * the step's start; with an update_stress() that integrates with the
+   * same tangent (forward Euler), the internal force at the step's end
+   * balances the loads exactly.
    *
    * A law is a plugin (NDDA_REGISTER_PLUGIN with this interface):
    * `set Constitutive law = name` in `subsection Materials` selects it, and
@@ -60,6 +66,27 @@ namespace ndda
     virtual SymmetricTensor<4, 2>
     tangent(const parameters::Material &material,
             const bool                  plane_strain) const = 0;
+
+    /** Whether point_tangent() depends on the stress (default: no). */
+    virtual bool
+    tangent_depends_on_stress() const
+    {
+      return false;
+    }
+
+    /**
+     * The tangent at a quadrature point of @p material whose stress is
+     * @p stress. Asked only if tangent_depends_on_stress(); the default
+     * is tangent().
+     */
+    virtual SymmetricTensor<4, 2>
+    point_tangent(const parameters::Material  &material,
+                  const bool                   plane_strain,
+                  const SymmetricTensor<2, 2> &stress) const
+    {
+      (void)stress;
+      return tangent(material, plane_strain);
+    }
 
     /**
      * Update @p stress, the stress at the start of the step (turned with

@@ -13,8 +13,8 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/constitutive_law.h>
+#include <ndda/physics/physics_parameters.h>
 
 #include <vector>
 
@@ -80,14 +80,24 @@ namespace ndda
      * (Re)compute the data of all cells, or with @p only_moved_cells only of
      * those whose vertices moved by more than @p tolerance times the cell
      * diameter since their last computation. Returns the number of cells
-     * computed.
+     * computed. If the constitutive law's tangent depends on the stress
+     * and @p stresses (the stresses at every quadrature point, cell by
+     * cell) are given, the stiffness uses the law's tangent at each point
+     * and every cell is computed.
      */
     unsigned int
     update(const DoFHandler<dim>       &dof_handler,
            const Mapping<dim>          &mapping,
            const parameters::Materials &materials,
            const bool                   only_moved_cells,
-           const double                 tolerance);
+           const double                 tolerance,
+           const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses =
+             nullptr);
+
+    /** Whether the constitutive law of @p materials has a tangent that
+     * depends on the stress. */
+    static bool
+    tangent_depends_on_stress(const parameters::Materials &materials);
 
     const CellData &
     operator[](const unsigned int cell) const

@@ -151,6 +151,19 @@ namespace ndda
     Vector<double>
     lumped_mass() const;
 
+    /**
+     * An inertia force M a turned into a nodal acceleration over the
+     * lumped mass (zero where a row has no mass), and back: the way an
+     * acceleration is carried across a node split, where a force vector
+     * must not be copied to both sides of a split node.
+     */
+    Vector<double>
+    lumped_acceleration(const Vector<double> &inertia_force) const;
+
+    /** The inverse of lumped_acceleration(): lumped mass times @p a. */
+    Vector<double>
+    lumped_inertia_force(const Vector<double> &a) const;
+
     /** Whether any material has viscous damping. */
     bool
     has_damping() const

@@ -8,9 +8,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/mesh/crackable_mesh.h>
-#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
+#include <ndda/physics/physics_parameters.h>
 
 #include <utility>
 #include <vector>
@@ -73,6 +73,12 @@ namespace ndda
       return stress;
     }
 
+    const std::vector<std::vector<Stress>> &
+    cells() const
+    {
+      return stress;
+    }
+
     /**
      * The stresses @p sigma of cell @p cell at the end of a step with
      * increment @p d: on entry the start stresses; turned by the cell's
@@ -103,6 +109,17 @@ namespace ndda
     /** Area-weighted mean stress of every cell. */
     std::vector<Stress>
     cell_means() const;
+
+    /**
+     * Area-weighted mean stress of every cell at the end of a step with
+     * increment @p d (advance() on copies; the field is not changed).
+     */
+    std::vector<Stress>
+    trial_cell_means(const Vector<double> &d) const;
+
+    /** Area of every cell (the sum of its quadrature weights). */
+    std::vector<double>
+    cell_areas() const;
 
     /**
      * Set @p force to the internal force t int B^T sigma (thesis 3.25, with

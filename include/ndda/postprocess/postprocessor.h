@@ -152,13 +152,20 @@ namespace ndda
                    const std::string &column,
                    const double       value);
 
+  } // namespace postprocess
+
+  namespace parameters
+  {
+    using dealii::ParameterHandler;
+
     /** `subsection Postprocess`: the selected postprocessors. */
-    struct Parameters
+    struct Postprocess
     {
       /// The selected postprocessors, in the order of the list, with
       /// their parameters read; stateless, so they may be shared.
-      std::vector<std::shared_ptr<const Postprocessor>> postprocessors;
-      std::vector<std::string>                          names;
+      std::vector<std::shared_ptr<const postprocess::Postprocessor>>
+                               postprocessors;
+      std::vector<std::string> names;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -166,7 +173,7 @@ namespace ndda
       void
       parse_parameters(ParameterHandler &prm);
     };
-  } // namespace postprocess
+  } // namespace parameters
 } // namespace ndda
 
 #endif

@@ -33,7 +33,7 @@ namespace ndda
       }
 
       /** What a line reports. */
-      struct State
+      struct Line
       {
         unsigned int step;
         double       time;
@@ -44,12 +44,62 @@ namespace ndda
 
       /** Write the line of @p state at wall time @p wall_time to @p out. */
       void
-      print(std::ostream &out, const double wall_time, const State &state);
+      print(std::ostream &out, const double wall_time, const Line &state);
 
     private:
       double       interval;
       double       last_wall_time = 0;
       unsigned int last_step      = 0;
+    };
+
+    /**
+     * When a run writes its frames: at the start, every @p interval
+     * seconds of simulated time (every step if zero) and at the end time.
+     * Times are compared with a relative tolerance of 1e-12, so that a
+     * sum of steps that should land on an output time does.
+     */
+    class OutputSchedule
+    {
+    public:
+      OutputSchedule(const double interval, const double end_time)
+        : interval(interval)
+        , end_time(end_time)
+        , next(interval)
+      {}
+
+      /** Whether the time @p t has reached @p target. */
+      static bool
+      reached(const double t, const double target)
+      {
+        return t >= target * (1. - 1e-12);
+      }
+
+      /** Whether the run is at its end time at time @p t. */
+      bool
+      finished(const double t) const
+      {
+        return reached(t, end_time);
+      }
+
+      /**
+       * Whether a frame is due at time @p t; if so, the next output time
+       * moves past @p t.
+       */
+      bool
+      frame_due(const double t)
+      {
+        if (!reached(t, next) && !finished(t))
+          return false;
+        if (interval > 0)
+          while (next <= t * (1. + 1e-12))
+            next += interval;
+        return true;
+      }
+
+    private:
+      double interval;
+      double end_time;
+      double next;
     };
   } // namespace postprocess
 } // namespace ndda

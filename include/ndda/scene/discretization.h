@@ -20,8 +20,10 @@
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/linear_system.h>
 #include <ndda/physics/loads.h>
+#include <ndda/physics/stress_field.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace ndda
@@ -71,18 +73,22 @@ namespace ndda
       setup_loads(const parameters::Parameters &parameters);
 
       /**
-       * Recompute the element matrices of the cells that moved beyond
-       * Control/Matrix update tolerance (all of them without
-       * @p only_moved_cells), and then the global matrices (with the bolt
-       * springs on @p displacement), gravity and, with @p only_moved_cells,
-       * the loaded faces. Returns false if no cell needed it (nothing was
-       * done), unless @p always_assemble (after a crack: the dofs are new,
-       * though no cell changed its shape).
+       * With @p only_moved_cells, recompute the element matrices of the
+       * cells that moved beyond Control/Matrix update tolerance (of every
+       * cell if the constitutive law's tangent depends on the stress: then
+       * from @p stresses, and on the first step too); without, keep those
+       * setup_dofs() computed. Then
+       * the global matrices (with the bolt springs on @p displacement),
+       * gravity and, with @p only_moved_cells, the loaded faces. Returns
+       * false if no cell needed it (nothing was done), unless
+       * @p always_assemble (after a crack: the dofs are new, though no cell
+       * changed its shape).
        */
       bool
       update_matrices(const parameters::Parameters &parameters,
                       const bool                    only_moved_cells,
                       const Vector<double>         &displacement,
+                      const StressField            &stresses,
                       const bool                    always_assemble = false);
 
       /** Assemble K, M and C (bolt springs on @p displacement). */
@@ -97,6 +103,23 @@ namespace ndda
       external_force(const double          t,
                      const Vector<double> &displacement,
                      Vector<double>       &force) const;
+
+      /**
+       * One line for the log: blocks, cells, vertices, degrees of freedom
+       * (and the element), constrained nodes.
+       */
+      std::string
+      summary() const;
+
+      /**
+       * The inertia force M a0 at the start of a run, for an integrator
+       * that needs the initial acceleration: M a0 = f_ext(t) - f_int, with
+       * zero acceleration at constrained dofs.
+       */
+      Vector<double>
+      initial_inertia_force(const double          t,
+                            const Vector<double> &displacement,
+                            const Vector<double> &internal_force) const;
 
       CrackableMesh                 &mesh;
       std::unique_ptr<FESystem<2>>   fe;

@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/contact/contact_handler.h>
+#include <ndda/contact/open_close_solver.h>
 #include <ndda/fracture/fracture_criterion.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
@@ -104,6 +105,11 @@ namespace ndda
     /** The step controller's limits (Control and Contact sections). */
     time::StepController::Limits
     step_limits(const parameters::Parameters &parameters);
+
+    /** The open-close iteration's settings (Contact section, and whether
+     * the time integrator averages contact forces). */
+    contact::OpenCloseSolver::Settings
+    open_close_settings(const parameters::Parameters &parameters);
   } // namespace scene
 } // namespace ndda
 
