@@ -105,16 +105,13 @@ namespace ndda
   void
   Simulator<dim>::setup_contacts()
   {
-    if (!parameters.contact.enabled)
-      return;
-    const auto distances  = scene::setup_contacts(parameters,
-                                                 mesh,
-                                                 fem.cell_material,
-                                                 fem.dof_map,
-                                                 scene_half_height,
-                                                 contacts);
-    contact_threshold     = distances.detection;
-    penetration_tolerance = distances.penetration_tolerance;
+    if (parameters.contact.enabled)
+      contact_distances = scene::setup_contacts(parameters,
+                                                mesh,
+                                                fem.cell_material,
+                                                fem.dof_map,
+                                                scene_half_height,
+                                                contacts);
   }
 
 
@@ -227,7 +224,7 @@ namespace ndda
     if (parameters.contact.enabled &&
         parameters.contact.penalty_method ==
           parameters::PenaltyMethod::automatic &&
-        contacts.max_penetration(d) > penetration_tolerance)
+        contacts.max_penetration(d) > contact_distances.penetration_tolerance)
       {
         contacts.set_normal_stiffness(2. *
                                       contacts.get_settings().normal_stiffness);
@@ -336,7 +333,15 @@ namespace ndda
     transfer(old_velocity, kinematics.velocity);
     Vector<double> new_acceleration;
     transfer(acceleration, new_acceleration);
-    setup_on_initial_geometry(bolt_forces);
+    // Constraints, bolts, loads and measure points are found by position
+    // on the scene's initial geometry.
+    fem.on_initial_geometry(displacement, [&]() {
+      fem.setup_constraints(parameters);
+      fem.bolts.set_axial_forces(bolt_forces);
+      fem.setup_loads(parameters);
+      measure_points.setup(
+        mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, true);
+    });
     setup_contacts();
     if (parameters.contact.enabled)
       contacts.carry_memory_from(old_contacts);
@@ -357,30 +362,6 @@ namespace ndda
     external_force.reinit(fem.dof_handler.n_dofs());
     assemble_external_force(time, external_force);
     fem.linear_system.invalidate();
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::setup_on_initial_geometry(
-    const std::vector<double> &bolt_forces)
-  {
-    // Constraints, loads and measure points are found by position on the
-    // scene's initial geometry: set them up with the mesh moved back
-    // there, then move it forward again.
-    auto u = fem.dof_map.vertex_values(displacement);
-    for (auto &x : u)
-      x *= -1.;
-    mesh.move_vertices(u);
-    fem.setup_constraints(parameters);
-    fem.bolts.set_axial_forces(bolt_forces);
-    fem.setup_loads(parameters);
-    measure_points.setup(
-      mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, true);
-    for (auto &x : u)
-      x *= -1.;
-    mesh.move_vertices(u);
   }
 
 
@@ -427,7 +408,7 @@ namespace ndda
         {
           TimerOutput::Scope scope(timer, "contact detection");
           contacts.begin_step(mesh.get_block_mesh().vertices,
-                              contact_threshold);
+                              contact_distances.detection);
         }
         if (fem.linear_system.update_contact_couplings(contacts.get_couplings(),
                                                        fem.dof_map,

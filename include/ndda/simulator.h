@@ -40,6 +40,7 @@
 #include <ndda/postprocess/progress_report.h>
 #include <ndda/postprocess/visualization.h>
 #include <ndda/scene/discretization.h>
+#include <ndda/scene/scene.h>
 #include <ndda/time/step_controller.h>
 #include <ndda/time/time_integrator.h>
 
@@ -382,14 +383,6 @@ namespace ndda
     /** The step report and the statistics row of the step just done. */
     void
     record_statistics(const double dt);
-    /**
-     * After a crack: constraints, bolts (with their axial forces
-     * @p bolt_forces), loads and measure points, found by position on the
-     * scene's initial geometry (the mesh moved back by the displacement
-     * and forward again).
-     */
-    void
-    setup_on_initial_geometry(const std::vector<double> &bolt_forces);
     void
     output_results();
     void
@@ -412,8 +405,7 @@ namespace ndda
 
     contact::OpenCloseSolver open_close;
     contact::ContactHandler  contacts;
-    double                   contact_threshold     = 0;
-    double                   penetration_tolerance = 0;
+    scene::ContactDistances  contact_distances;
 
     Vector<double> displacement;
     /// Velocity and inertia force M a, carried by the time integrator.

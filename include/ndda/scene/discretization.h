@@ -105,6 +105,26 @@ namespace ndda
                      Vector<double>       &force) const;
 
       /**
+       * Call @p setup with the mesh moved back by @p displacement to the
+       * scene's initial geometry (where constraints, loads and measure
+       * points are found by position), then move it forward again.
+       */
+      template <typename Function>
+      void
+      on_initial_geometry(const Vector<double> &displacement,
+                          const Function       &setup)
+      {
+        auto u = dof_map.vertex_values(displacement);
+        for (auto &x : u)
+          x *= -1.;
+        mesh.move_vertices(u);
+        setup();
+        for (auto &x : u)
+          x *= -1.;
+        mesh.move_vertices(u);
+      }
+
+      /**
        * One line for the log: blocks, cells, vertices, degrees of freedom
        * (and the element), constrained nodes.
        */
