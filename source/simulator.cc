@@ -151,8 +151,9 @@ namespace ndda
   {
     TimerOutput::Scope scope(timer, "element matrices");
     // The first step uses the element matrices that setup() computed (it
-    // needed them for the initial internal force); later steps recompute
-    // those of the cells that moved.
+    // needed them for the initial internal force; a tangent that depends
+    // on the stress is rebuilt from the initial stresses); later steps
+    // recompute those of the cells that moved.
     if (!fem.update_matrices(
           parameters, only_moved_cells, displacement, stresses))
       return;
