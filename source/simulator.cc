@@ -68,7 +68,7 @@ namespace ndda
                         fem.dof_map,
                         parameters.materials,
                         fem.cell_material,
-                        parameters.control.rotate_with_spin);
+                        mesh.get_triangulation());
     stresses.reinit(mesh.get_triangulation().n_active_cells(),
                     fem.element_cache.n_quadrature_points());
     scene::set_initial_state(parameters,
@@ -106,12 +106,15 @@ namespace ndda
   Simulator<dim>::setup_contacts()
   {
     if (parameters.contact.enabled)
-      contact_distances = scene::setup_contacts(parameters,
-                                                mesh,
-                                                fem.cell_material,
-                                                fem.dof_map,
-                                                scene_half_height,
-                                                contacts);
+      {
+        contact_distances = scene::setup_contacts(parameters,
+                                                  mesh,
+                                                  fem.cell_material,
+                                                  fem.dof_map,
+                                                  scene_half_height,
+                                                  contacts);
+        contacts.set_frames(&fem.frames);
+      }
   }
 
 
@@ -241,39 +244,48 @@ namespace ndda
   Simulator<dim>::commit_step(const Vector<double> &d, const double dt)
   {
     TimerOutput::Scope scope(timer, "update");
-    if (parameters.contact.enabled)
-      contacts.end_step(d);
-
     // Velocity and acceleration at the end of the step.
     const auto &mass = fem.linear_system.get_mass_matrix();
     parameters.control.time_integrator->update(
       d, dt, mass, inertia_correction, kinematics);
 
-    // Objective update: first turn the state of the step's start by the
-    // increment's rotation, then add the increment's stress.
-    if (parameters.control.rotate_with_spin)
-      rotate_block_motion(mesh,
-                          fem.dof_map,
-                          stresses,
-                          mass,
-                          d,
-                          kinematics.velocity,
-                          kinematics.inertia_force);
-    stresses.advance(d);
+    // Each block's rotation made exact: its linearised rotation in d is
+    // replaced by the finite one, and its velocity and acceleration turn
+    // with it.
+    Vector<double>            motion(d);
+    const std::vector<double> rotation =
+      rotate_blocks(mesh,
+                    fem.dof_map,
+                    fem.element_cache,
+                    stresses,
+                    fem.constraints,
+                    mass,
+                    motion,
+                    kinematics.velocity,
+                    kinematics.inertia_force);
+    // The blocks' frames turn with them: their matrices stay.
+    fem.frames.turn(rotation);
+    if (parameters.contact.enabled)
+      contacts.end_step(motion);
 
-    fem.bolts.update(displacement, d);
+    // Objective update on the step's start geometry: each point's stress
+    // turns by the increment's rotation there, exactly, and takes the
+    // stress of its stretch.
+    stresses.advance(motion);
+
+    fem.bolts.update(displacement, motion);
 
     // Work of the loads over the step, by the trapezoidal rule.
-    load_work += 0.5 * (external_force * d + step_external_force * d);
+    load_work += 0.5 * (external_force * motion + step_external_force * motion);
     external_force = step_external_force;
 
-    // The internal force of the new stresses, and the strain energy they
-    // hold.
-    compute_internal_force();
-
-    displacement += d;
-    mesh.move_vertices(fem.dof_map.vertex_values(d));
+    displacement += motion;
+    mesh.move_vertices(fem.dof_map.vertex_values(motion));
     time += dt;
+
+    // The internal force of the new stresses on the step's end geometry,
+    // and the strain energy they hold.
+    compute_internal_force();
   }
 
 

@@ -168,7 +168,8 @@ namespace
       cache.set_quadratures(element->cell_quadrature, element->mass_quadrature);
       cache.update(dof_handler, mapping, materials, false, 0.);
       cell_material.assign(mesh.get_triangulation().n_active_cells(), 0);
-      stresses.initialize(cache, dof_map, materials, cell_material, true);
+      stresses.initialize(
+        cache, dof_map, materials, cell_material, mesh.get_triangulation());
       stresses.reinit(cell_material.size(), cache.n_quadrature_points());
       const NodeLocator nodes(mesh, dof_handler, mapping);
       support_points = nodes.support_points;
@@ -312,20 +313,28 @@ namespace
           "no cell rebuilt with a constant tangent");
   }
 
-  /** An infinitesimal rotation turns an initial stress. */
+  /**
+   * A finite rigid rotation by 0.5 rad of a prestressed square: the
+   * stresses turn exactly (R sigma R^T) and take no strain, and on the
+   * turned geometry the internal force is the old one turned, though the
+   * element data are those of the start geometry.
+   */
   void
   check_rotation(const std::string &element_name)
   {
     Square       square(element_name, read_materials(""));
-    const double theta = 1e-3, s0 = 1e6;
+    const double theta = 0.5, s0 = 1e6;
     for (unsigned int c = 0; c < square.stresses.n_cells(); ++c)
       for (auto &sigma : square.stresses[c])
         sigma[0][0] = s0;
-    const auto d = square.interpolate([&](const Point<2> &x) {
-      return Tensor<1, 2>({-theta * x[1], theta * x[0]});
+    Vector<double> force0(square.dof_handler.n_dofs());
+    const double   energy0 = square.stresses.internal_force(force0);
+    const double   c = std::cos(theta), s = std::sin(theta);
+    const auto     d = square.interpolate([&](const Point<2> &x) {
+      return Tensor<1, 2>(
+        {(c - 1) * x[0] - s * x[1], s * x[0] + (c - 1) * x[1]});
     });
     square.stresses.advance(d);
-    const double c = std::cos(theta), s = std::sin(theta);
     for (unsigned int cell = 0; cell < square.stresses.n_cells(); ++cell)
       for (const auto &sigma : square.stresses[cell])
         {
@@ -336,9 +345,24 @@ namespace
           check(std::abs(sigma[0][1] - c * s * s0) < 1e-9 * s0,
                 "rotated sigma_xy");
         }
+    square.mesh.move_vertices(square.dof_map.vertex_values(d));
+    Vector<double> force(square.dof_handler.n_dofs());
+    const double   energy = square.stresses.internal_force(force);
+    double         error  = 0;
+    for (const auto &dofs : square.dof_map.node_dofs)
+      {
+        const double x = force0[dofs[0]], y = force0[dofs[1]];
+        error = std::max({error,
+                          std::abs(force[dofs[0]] - (c * x - s * y)),
+                          std::abs(force[dofs[1]] - (s * x + c * y))});
+      }
+    check(error < 1e-9 * force0.linfty_norm(), "internal force turned");
+    check(std::abs(energy - energy0) < 1e-9 * energy0,
+          "strain energy kept by a rotation");
     std::cout << element_name << ": rotation by " << theta
-              << " rad, sigma_xy = " << square.stresses.mean(0)[0][1] << " Pa"
-              << std::endl;
+              << " rad, sigma_xy = " << square.stresses.mean(0)[0][1]
+              << " Pa, internal force turned, strain energy " << energy
+              << " J (before " << energy0 << " J)" << std::endl;
   }
 
   /** A rigid translation through LinearSystem and OpenCloseSolver. */

@@ -11,6 +11,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ndda/contact/contact_handler.h>
+#include <ndda/physics/block_rotation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -153,8 +154,30 @@ namespace ndda
       // the sparse matrix row by row (one search per row, not per entry);
       // one block for all contacts, so that it is allocated once.
       dealii::FullMatrix<double> k;
+      const bool                 turned = frames != nullptr && frames->turned();
       for (const ContactPair &c : contacts)
         {
+          if (c.state == State::vertex_spring && turned)
+            {
+              // The same spring as below, as a dense block turned into
+              // the frames of the two vertices' blocks.
+              const auto &da = dofs->vertex_dofs[c.vertex_a];
+              const auto &db = dofs->vertex_dofs[c.vertex_b];
+              const std::vector<dealii::types::global_dof_index> ab = {da[0],
+                                                                       da[1],
+                                                                       db[0],
+                                                                       db[1]};
+              k.reinit(4, 4);
+              for (unsigned int i = 0; i < 4; ++i)
+                {
+                  k(i, i)           = kn;
+                  k(i, (i + 2) % 4) = -kn;
+                }
+              frames->turn(ab, k);
+              for (unsigned int i = 0; i < 4; ++i)
+                matrix.add(ab[i], 4, ab.data(), &k(i, 0), false, false);
+              continue;
+            }
           if (c.state == State::vertex_spring)
             {
               // Thesis 6.5-6.12: a spring on the relative displacement of
@@ -176,6 +199,8 @@ namespace ndda
           const unsigned int n = o.dofs.size();
           k.reinit(n, n);
           settings.law->add_springs(o, c, c.scale, settings, &k, rhs);
+          if (turned)
+            frames->turn(o.dofs, k);
           for (unsigned int i = 0; i < n; ++i)
             matrix.add(o.dofs[i], n, o.dofs.data(), &k(i, 0), false, false);
         }

@@ -218,13 +218,6 @@ namespace ndda
           "Element matrices are rebuilt when a vertex has moved by more than "
           "this fraction of its cell's diameter since the last build; 0 "
           "rebuilds every step.");
-        prm.declare_entry(
-          "Rotate with spin",
-          "true",
-          Patterns::Bool(),
-          "Rotate nodal velocities and cell stresses by the local rotation of "
-          "each step's increment, so that a spinning block keeps spinning "
-          "(DDA carries its rotation the same way). See doc/theory.md.");
       }
     } // namespace
 
@@ -285,7 +278,6 @@ namespace ndda
                   ExcMessage("Control/Penalty factor: must be greater than "
                              "zero with 'Constraint method = penalty'."));
       matrix_update_tolerance = prm.get_double("Matrix update tolerance");
-      rotate_with_spin        = prm.get_bool("Rotate with spin");
 
       // The element: Finite element, or else FE_SimplexP(Element degree).
       const std::string by_degree =

@@ -13,19 +13,120 @@ namespace ndda
      * measured relative to its centroid: a translation does not change the
      * element matrices.
      */
-    template <typename CellIterator, int dim>
+    template <typename CellIterator>
     bool
-    moved_beyond(const CellIterator            &cell,
-                 const std::vector<Point<dim>> &vertices,
-                 const double                   distance)
+    moved_beyond(const CellIterator          &cell,
+                 const std::vector<Point<2>> &vertices,
+                 const double                 distance,
+                 const double                 turned)
     {
-      Tensor<1, dim> shift;
+      Point<2> now, then;
       for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-        shift += (cell->vertex(v) - vertices[v]) / cell->n_vertices();
-      double moved = 0;
+        {
+          now += cell->vertex(v) / cell->n_vertices();
+          then += vertices[v] / cell->n_vertices();
+        }
+      // Turn the present shape back by the frame's turn since then.
+      const double c = std::cos(turned), s = std::sin(turned);
+      double       moved = 0;
       for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-        moved = std::max(moved, (cell->vertex(v) - vertices[v] - shift).norm());
+        {
+          const Tensor<1, 2> r = cell->vertex(v) - now;
+          const Tensor<1, 2> back({c * r[0] + s * r[1], -s * r[0] + c * r[1]});
+          moved = std::max(moved, (back - (vertices[v] - then)).norm());
+        }
       return moved > distance;
+    }
+
+
+
+    /**
+     * @p K <- Q^T K Q: the element matrix of the global frame in the frame
+     * of angle @p angle, Q turning the (x, y) dofs of each node;
+     * @p partner is the local dof of the other component of the same node,
+     * @p component the component of each local dof.
+     */
+    void
+    turn_to_frame(FullMatrix<double>              &K,
+                  const std::vector<unsigned int> &partner,
+                  const std::vector<unsigned int> &component,
+                  const double                     angle)
+    {
+      const double       c = std::cos(angle), s = std::sin(angle);
+      const unsigned int n = K.m();
+      // Rows (Q^T K), then columns (K Q), each on the x dof of a node and
+      // its partner: [x; y] <- [c x + s y; -s x + c y].
+      for (unsigned int i = 0; i < n; ++i)
+        if (component[i] == 0)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double x = K(i, j), y = K(partner[i], j);
+              K(i, j)          = c * x + s * y;
+              K(partner[i], j) = -s * x + c * y;
+            }
+      for (unsigned int j = 0; j < n; ++j)
+        if (component[j] == 0)
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const double x = K(i, j), y = K(i, partner[j]);
+              K(i, j)          = c * x + s * y;
+              K(i, partner[j]) = -s * x + c * y;
+            }
+    }
+
+
+
+    /** The edge vectors p1 - p0 and p2 - p0 of a triangle as columns. */
+    template <int dim>
+    Tensor<2, dim>
+    edge_matrix(const std::vector<Point<dim>> &p)
+    {
+      Tensor<2, dim> e;
+      for (unsigned int k = 0; k < dim; ++k)
+        for (unsigned int j = 0; j < dim; ++j)
+          e[k][j] = p[j + 1][k] - p[0][k];
+      return e;
+    }
+
+
+
+    /**
+     * For each local dof of the vector element @p fe, the local dof of the
+     * other component at the same node, and its component.
+     */
+    template <int dim>
+    std::pair<std::vector<unsigned int>, std::vector<unsigned int>>
+    node_pairs(const FiniteElement<dim> &fe)
+    {
+      const unsigned int        n = fe.n_dofs_per_cell();
+      std::vector<unsigned int> partner(n), component(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          component[i] = fe.system_to_component_index(i).first;
+          for (unsigned int j = 0; j < n; ++j)
+            if (j != i && fe.system_to_component_index(j).second ==
+                            fe.system_to_component_index(i).second)
+              partner[i] = j;
+        }
+      return {partner, component};
+    }
+
+
+
+    /** The geometry the data of @p cell are computed on, into @p d. */
+    template <typename CellIterator, typename CellData>
+    void
+    record_geometry(const CellIterator &cell, CellData &d)
+    {
+      d.vertices.resize(cell->n_vertices());
+      d.vertex_indices.resize(cell->n_vertices());
+      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+        {
+          d.vertices[v]       = cell->vertex(v);
+          d.vertex_indices[v] = cell->vertex_index(v);
+        }
+      d.reference_inverse = invert(edge_matrix(d.vertices));
+      d.diameter          = cell->diameter();
     }
 
 
@@ -62,7 +163,7 @@ namespace ndda
 
 
     /**
-     * The strain and spin of every shape function, t JxW and the stiffness
+     * The gradient of every shape function, t JxW and the stiffness
      * t int B^T C B at the points of @p values (the cell quadrature), into
      * @p d (sized before).
      */
@@ -79,18 +180,15 @@ namespace ndda
         {
           d.weight[q] = t * values.JxW(q);
           for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              d.strain[q * n_dofs + i]  = values[u].symmetric_gradient(i, q);
-              const Tensor<2, dim> grad = values[u].gradient(i, q);
-              d.spin[q * n_dofs + i]    = 0.5 * (grad[1][0] - grad[0][1]);
-            }
+            d.gradient[q * n_dofs + i] = values[u].gradient(i, q);
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const SymmetricTensor<2, dim> Ceps_i =
-                C[q] * d.strain[q * n_dofs + i];
+                C[q] * symmetrize(d.gradient[q * n_dofs + i]);
               for (unsigned int j = 0; j < n_dofs; ++j)
                 d.stiffness(i, j) +=
-                  (Ceps_i * d.strain[q * n_dofs + j]) * d.weight[q];
+                  (Ceps_i * symmetrize(d.gradient[q * n_dofs + j])) *
+                  d.weight[q];
             }
         }
     }
@@ -117,7 +215,8 @@ namespace ndda
     const parameters::Materials                             &materials,
     const bool                                               only_moved_cells,
     const double                                             tolerance,
-    const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses)
+    const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses,
+    const std::vector<double>                               *frame_angles)
   {
     const auto        &fe     = dof_handler.get_fe();
     const unsigned int n_dofs = fe.n_dofs_per_cell();
@@ -141,6 +240,7 @@ namespace ndda
     const bool point_tangents =
       law->tangent_depends_on_stress() && stresses != nullptr;
     std::vector<SymmetricTensor<4, dim>> C(n_q_points);
+    const auto [partner, component] = node_pairs(fe);
 
     FEValues<dim> fe_values(mapping,
                             fe,
@@ -157,8 +257,18 @@ namespace ndda
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         CellData &d = data[cell->active_cell_index()];
+        // A crack renumbers vertices without moving them: the deformation
+        // gradient reads the present positions through these indices.
+        for (unsigned int v = 0; v < d.vertex_indices.size(); ++v)
+          d.vertex_indices[v] = cell->vertex_index(v);
+        const double frame_angle =
+          frame_angles != nullptr ? (*frame_angles)[cell->active_cell_index()] :
+                                    0.;
         if (only_moved_cells && !point_tangents && !d.vertices.empty() &&
-            !moved_beyond(cell, d.vertices, tolerance * d.diameter))
+            !moved_beyond(cell,
+                          d.vertices,
+                          tolerance * d.diameter,
+                          frame_angle - d.frame_angle))
           continue;
         ++n_computed;
         computed_cells.push_back(cell->active_cell_index());
@@ -175,8 +285,7 @@ namespace ndda
 
         d.stiffness.reinit(n_dofs, n_dofs);
         d.mass.reinit(n_dofs, n_dofs);
-        d.strain.resize(n_q_points * n_dofs);
-        d.spin.resize(n_q_points * n_dofs);
+        d.gradient.resize(n_q_points * n_dofs);
         d.weight.resize(n_q_points);
         d.viscosity_over_density =
           material.density > 0 ? material.viscosity / material.density : 0.;
@@ -189,11 +298,11 @@ namespace ndda
         const double density = material.density * d.initial_area / area;
 
         add_operators(fe_values, C, t, d);
+        d.frame_angle = frame_angle;
+        if (frame_angle != 0.)
+          turn_to_frame(d.stiffness, partner, component, frame_angle);
         add_mass_matrix(mass_values, density * t, d.mass);
-        d.vertices.resize(cell->n_vertices());
-        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-          d.vertices[v] = cell->vertex(v);
-        d.diameter = cell->diameter();
+        record_geometry(cell, d);
       }
     return n_computed;
   }

@@ -4,6 +4,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <ndda/physics/block_rotation.h>
 #include <ndda/physics/linear_system.h>
 
 #include <algorithm>
@@ -184,7 +185,8 @@ namespace ndda
     const bool springs = static_cast<bool>(add_springs);
     // The condensed matrix is the system matrix with the springs, unless
     // the factorization of the system matrix without springs serves.
-    const bool changed = springs || !base_factorized;
+    const bool changed  = springs || !base_factorized;
+    const bool in_frame = frames != nullptr && frames->turned();
     if (springs)
       {
         const auto section = scope(timer, "contact assembly");
@@ -193,6 +195,14 @@ namespace ndda
       }
     else if (!base_factorized)
       condensed_matrix.copy_from(system_matrix);
+    Vector<double> prescribed_in_frame;
+    if (in_frame)
+      {
+        frames->to_frame(b);
+        prescribed_in_frame = prescribed;
+        frames->to_frame(prescribed_in_frame);
+      }
+    const Vector<double> &g = in_frame ? prescribed_in_frame : prescribed;
 
     const auto  section = scope(timer, "solve");
     const auto &affine  = constraints.affine_constraints();
@@ -203,7 +213,7 @@ namespace ndda
         if (!constraints.constrained_nodes().empty())
           {
             Vector<double> tmp(b.size());
-            (changed ? condensed_matrix : system_matrix).vmult(tmp, prescribed);
+            (changed ? condensed_matrix : system_matrix).vmult(tmp, g);
             b -= tmp;
           }
         affine.condense(b);
@@ -238,8 +248,10 @@ namespace ndda
     if (constraints.exact())
       {
         affine.distribute(d);
-        d += prescribed;
+        d += g;
       }
+    if (in_frame)
+      frames->to_global(d);
     return iterations;
   }
 

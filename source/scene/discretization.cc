@@ -49,6 +49,9 @@ namespace ndda
       for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
         cell_material[cell->active_cell_index()] = cell->material_id();
       dof_map.reinit(dof_handler);
+      // A crack keeps the cells (and their frames).
+      if (frames.cell_angles().size() != dof_map.n_cells())
+        frames.reinit(dof_map.n_cells());
 
       if (element_matrices)
         element_cache.update(
@@ -85,6 +88,8 @@ namespace ndda
       bolts.setup(parameters.bolts, nodes);
       bolts.add_couplings(dsp);
       linear_system.reinit(dsp, constraints, parameters.contact.enabled);
+      frames.setup(mesh, dof_map, constraints, bolts);
+      linear_system.set_frames(&frames);
     }
 
 
@@ -120,7 +125,8 @@ namespace ndda
                                parameters.materials,
                                tolerance > 0.,
                                tolerance,
-                               &stresses.cells()) == 0 &&
+                               &stresses.cells(),
+                               &frames.cell_angles()) == 0 &&
           !always_assemble)
         return false;
       assemble(displacement);

@@ -16,6 +16,11 @@
 #include <ndda/mesh/boundary_edges.h>
 #include <ndda/physics/dof_map.h>
 
+namespace ndda
+{
+  class BlockFrames;
+}
+
 #include <array>
 #include <map>
 #include <set>
@@ -156,8 +161,20 @@ namespace ndda
       has_springs() const;
 
       /**
-       * Add the springs of the present states to @p matrix and their
-       * forces at d = 0 to @p rhs.
+       * The blocks' frames in which the linear system is solved
+       * (referenced; nullptr: the global frame): assemble() turns the
+       * springs into them.
+       */
+      void
+      set_frames(const BlockFrames *frames)
+      {
+        this->frames = frames;
+      }
+
+      /**
+       * Add the springs of the present states to @p matrix, in the
+       * blocks' frames (Q^T S Q, see set_frames()), and their forces at
+       * d = 0 to @p rhs, in global components.
        */
       void
       assemble(dealii::SparseMatrix<double> &matrix,
@@ -549,7 +566,8 @@ namespace ndda
       end_closed_contact(const ContactPair &c, const dealii::Vector<double> &d);
 
       ContactSettings                        settings;
-      const DofMap                          *dofs = nullptr;
+      const DofMap                          *dofs   = nullptr;
+      const BlockFrames                     *frames = nullptr;
       std::vector<BoundaryEdge>              edges;
       std::vector<double>                    edge_friction;
       std::vector<double>                    vertex_friction;

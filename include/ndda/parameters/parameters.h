@@ -66,7 +66,6 @@ namespace ndda
       ConstraintMethod                            constraint_method;
       double                                      penalty_factor;
       double                                      matrix_update_tolerance;
-      bool                                        rotate_with_spin;
 
       /// The scalar element by name, as make_element() takes it
       /// (physics/finite_element.h): Finite element, or else

@@ -9,8 +9,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/constraints.h>
+#include <ndda/physics/physics_parameters.h>
 
 #include <array>
 #include <utility>
@@ -79,6 +79,16 @@ namespace ndda
     empty() const
     {
       return bolts.empty();
+    }
+
+    /** The x dof of every anchor node. */
+    std::vector<index>
+    anchor_dofs() const
+    {
+      std::vector<index> dofs;
+      for (const auto &bolt : bolts)
+        dofs.insert(dofs.end(), {bolt.dofs[0], bolt.dofs[2]});
+      return dofs;
     }
 
   private:

@@ -28,16 +28,23 @@ namespace ndda
    * much (DESIGN.md decision 4). For each cell:
    *
    * - stiffness: t * int B^T C B (thesis 3.24), C the tangent of the
-   *   scene's constitutive law (Materials::constitutive_law),
+   *   scene's constitutive law (Materials::constitutive_law), turned into
+   *   the frame of the cell's block (BlockFrames) at the time: Q^T K Q,
    * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
    *   time-step factor), with rho scaled to keep the cell's initial mass,
    * - at every point of the element's cell quadrature (QGaussSimplex(p),
    *   one point for P1, whose strain is constant; the stress lives at these
-   *   points), the strain and the spin of each shape function and
-   *   t * JxW, so that stress updates, internal forces and local rotations
-   *   need no FEValues in the time loop. The mass matrix uses the mass
-   *   quadrature, QGaussSimplex(p + 1). Both come with the element
-   *   (physics/finite_element.h) through set_quadratures().
+   *   points), the gradient of each shape function and t * JxW, so that
+   *   stress updates and internal forces need no FEValues in the time
+   *   loop,
+   * - the cell's vertex indices and the inverse of its edge matrix
+   *   [X1 - X0, X2 - X0] at the moment of computation, so that the
+   *   deformation gradient F = dx/dX of the cell's (affine) motion since
+   *   then is two edge vectors times it (reference_inverse()): stresses
+   *   and internal forces are exact on the present geometry however far
+   *   the cell has turned since its data were computed (doc/theory.md). The
+   * mass matrix uses the mass quadrature, QGaussSimplex(p + 1). Both come with
+   * the element (physics/finite_element.h) through set_quadratures().
    *
    * @ingroup physics
    */
@@ -51,15 +58,21 @@ namespace ndda
       FullMatrix<double> mass;
       /// Viscosity over density: the damping matrix is this times mass.
       double viscosity_over_density = 0;
-      /// strain[q * n_dofs + i]: symmetric gradient of shape function i.
-      std::vector<SymmetricTensor<2, dim>> strain;
-      /// spin[q * n_dofs + i]: (d phi_y / dx - d phi_x / dy) / 2.
-      std::vector<double> spin;
+      /// gradient[q * n_dofs + i]: gradient of (vector) shape function i,
+      /// d phi_i / dX, on the geometry of the computation.
+      std::vector<Tensor<2, dim>> gradient;
       /// thickness * JxW at each quadrature point.
       std::vector<double> weight;
       /// Vertex positions when the data were computed.
       std::vector<Point<dim>> vertices;
-      double                  diameter = 0;
+      /// The triangulation's indices of the cell's vertices.
+      std::vector<unsigned int> vertex_indices;
+      /// Inverse of the edge matrix [X1 - X0, X2 - X0] (columns) of the
+      /// vertices when the data were computed.
+      Tensor<2, dim> reference_inverse;
+      /// The angle of the block's frame when the data were computed.
+      double frame_angle = 0;
+      double diameter    = 0;
       /// Area at the first computation: the density is scaled by
       /// initial_area / area so that the mass of a cell never changes.
       double initial_area = 0;
@@ -79,11 +92,13 @@ namespace ndda
     /**
      * (Re)compute the data of all cells, or with @p only_moved_cells only of
      * those whose vertices moved by more than @p tolerance times the cell
-     * diameter since their last computation. Returns the number of cells
-     * computed. If the constitutive law's tangent depends on the stress
-     * and @p stresses (the stresses at every quadrature point, cell by
-     * cell) are given, the stiffness uses the law's tangent at each point
-     * and every cell is computed.
+     * diameter since their last computation, seen from the frame of the
+     * cell's block (@p frame_angles, by cell; none: the global frame), so
+     * that a cell that only turned with its block's frame has not moved.
+     * Returns the number of cells computed. If the constitutive law's
+     * tangent depends on the stress and @p stresses (the stresses at every
+     * quadrature point, cell by cell) are given, the stiffness uses the
+     * law's tangent at each point and every cell is computed.
      */
     unsigned int
     update(const DoFHandler<dim>       &dof_handler,
@@ -92,7 +107,8 @@ namespace ndda
            const bool                   only_moved_cells,
            const double                 tolerance,
            const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses =
-             nullptr);
+             nullptr,
+           const std::vector<double> *frame_angles = nullptr);
 
     /** Whether the constitutive law of @p materials has a tangent that
      * depends on the stress. */
@@ -103,6 +119,26 @@ namespace ndda
     operator[](const unsigned int cell) const
     {
       return data[cell];
+    }
+
+    /**
+     * The deformation gradient F = dx/dX of cell @p cell from the geometry
+     * its data were computed on to the present one, @p vertices (the
+     * triangulation's vertices): the cell's motion is affine (straight
+     * sides), so F is its present edge matrix times
+     * CellData::reference_inverse.
+     */
+    Tensor<2, dim>
+    deformation_gradient(const unsigned int             cell,
+                         const std::vector<Point<dim>> &vertices) const
+    {
+      const CellData &d = data[cell];
+      Tensor<2, dim>  edges;
+      for (unsigned int k = 0; k < dim; ++k)
+        for (unsigned int j = 0; j < dim; ++j)
+          edges[k][j] = vertices[d.vertex_indices[j + 1]][k] -
+                        vertices[d.vertex_indices[0]][k];
+      return edges * d.reference_inverse;
     }
 
     /** The constitutive law of the last update(). */

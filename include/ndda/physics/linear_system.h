@@ -22,6 +22,8 @@
 
 namespace ndda
 {
+  class BlockFrames;
+
   /**
    * The global matrices of a scene and the linear solves of its time steps
    * (thesis 3.11): the stiffness K, mass M and damping C assembled from the
@@ -41,7 +43,8 @@ namespace ndda
   class LinearSystem
   {
   public:
-    /** Adds springs (the contacts') to a matrix and a right-hand side. */
+    /** Adds springs (the contacts') to a matrix (in the blocks' frames,
+     * see solve()) and their forces to a right-hand side. */
     using SpringAssembler =
       std::function<void(SparseMatrix<double> &, Vector<double> &)>;
 
@@ -119,6 +122,13 @@ namespace ndda
      * factorization, at most @p reuse_iterations iterations (0: never).
      * Returns the iterations of the solve: GMRES's with the earlier
      * factorization, else the linear solver's (1 for a direct solver).
+     *
+     * With turned frames (set_frames()), the assembled matrices are those
+     * of the blocks' frames (ElementCache), @p add_springs adds the
+     * springs in them (Q^T S Q; ContactHandler::set_frames()) and their
+     * forces s in global components, and the system is solved there:
+     * (A + Q^T S Q) (Q^T d) = Q^T (b + s), d returned in global
+     * components.
      */
     unsigned int
     solve(const SpringAssembler &add_springs,
@@ -127,6 +137,16 @@ namespace ndda
           const Constraints     &constraints,
           const unsigned int     reuse_iterations,
           Vector<double>        &d);
+
+    /**
+     * The blocks' frames in which the assembled matrices are (referenced;
+     * nullptr: the global frame).
+     */
+    void
+    set_frames(const BlockFrames *frames)
+    {
+      this->frames = frames;
+    }
 
     /**
      * Solve M a = @p rhs with a = 0 at the constrained dofs (the initial
@@ -197,6 +217,7 @@ namespace ndda
     SparseMatrix<double>                               system_matrix;
     /// The condensed system matrix with the contact springs of the solve.
     SparseMatrix<double>          condensed_matrix;
+    const BlockFrames            *frames = nullptr;
     std::unique_ptr<LinearSolver> linear_solver;
     bool                          damped           = false;
     double                        assembled_dt     = -1;

@@ -18,10 +18,13 @@
 namespace ndda
 {
   /**
-   * The stresses of a scene, one per point of the cell quadrature of every
-   * active cell, and what a step does with them: the objective update
-   * over an increment (turn with the cell's spin, then the constitutive
-   * law's update), the internal force and the strain energy they hold.
+   * The stresses of a scene (Cauchy stresses in the global frame), one per
+   * point of the cell quadrature of every active cell, and what a step
+   * does with them: the objective update over an increment (the step's
+   * deformation gradient split into its exact rotation, which turns the
+   * stress, and its stretch, the strain the constitutive law is given),
+   * the internal force on the present geometry and the strain energy they
+   * hold (doc/theory.md, "Finite rotation").
    *
    * @ingroup physics
    */
@@ -33,8 +36,8 @@ namespace ndda
     /**
      * Work on the cells of @p element_cache with the dofs of @p dof_map,
      * the law and materials of @p materials, the material id of each cell
-     * @p cell_material; with @p rotate_with_spin, stresses turn with the
-     * spin (Control/Rotate with spin). The objects are referenced, not
+     * @p cell_material, on the present geometry of @p triangulation (its
+     * vertices move with the run). The objects are referenced, not
      * copied.
      */
     void
@@ -42,7 +45,7 @@ namespace ndda
                const DofMap                    &dof_map,
                const parameters::Materials     &materials,
                const std::vector<unsigned int> &cell_material,
-               const bool                       rotate_with_spin);
+               const Triangulation<2>          &triangulation);
 
     /** @p n_cells cells of @p n_points zero stresses each. */
     void
@@ -81,9 +84,10 @@ namespace ndda
 
     /**
      * The stresses @p sigma of cell @p cell at the end of a step with
-     * increment @p d: on entry the start stresses; turned by the cell's
-     * rotation in the increment (if stresses turn with the spin), then
-     * updated by the constitutive law with the increment's strain.
+     * increment @p d from the present geometry: on entry the start
+     * stresses. At each point the step's deformation gradient
+     * F = I + dd/dx = V R is split; the stress is turned by R (exactly),
+     * then updated by the constitutive law with the strain V - I.
      */
     void
     advance(const unsigned int    cell,
@@ -117,51 +121,42 @@ namespace ndda
     std::vector<Stress>
     trial_cell_means(const Vector<double> &d) const;
 
-    /** Area of every cell (the sum of its quadrature weights). */
+    /** Present area of every cell (times the thickness). */
     std::vector<double>
     cell_areas() const;
 
     /**
-     * Set @p force to the internal force t int B^T sigma (thesis 3.25, with
-     * the accumulated stress in place of the initial stress) and return
-     * the elastic energy the stresses hold (the law's energy density
-     * integrated, J).
+     * Set @p force to the internal force t int_x B^T sigma on the present
+     * geometry (thesis 3.25, with the accumulated stress in place of the
+     * initial stress) and return the elastic energy the stresses hold (the
+     * law's energy density integrated, J).
      */
     double
     internal_force(Vector<double> &force) const;
 
-    /** Rotation (rad) of cell @p cell in the increment @p d times its area,
-     * and its area. */
+    /**
+     * The rotation (rad) of cell @p cell in the increment @p d, the
+     * curl of d on the present geometry, times the cell's present area;
+     * and that area.
+     */
     std::pair<double, double>
     cell_rotation(const unsigned int cell, const Vector<double> &d) const;
 
   private:
-    const ElementCache<2>           *element_cache    = nullptr;
-    const DofMap                    *dof_map          = nullptr;
-    const parameters::Materials     *materials        = nullptr;
-    const std::vector<unsigned int> *cell_material    = nullptr;
-    bool                             rotate_with_spin = false;
+    /** The deformation gradient of cell @p cell since its element data
+     * were computed (ElementCache::deformation_gradient()). */
+    Tensor<2, 2>
+    deformation_gradient(const unsigned int cell) const;
+
+    const ElementCache<2>           *element_cache = nullptr;
+    const DofMap                    *dof_map       = nullptr;
+    const parameters::Materials     *materials     = nullptr;
+    const std::vector<unsigned int> *cell_material = nullptr;
+    const Triangulation<2>          *triangulation = nullptr;
 
     std::vector<std::vector<Stress>> stress;
   };
 
-  /**
-   * Turn the velocity @p velocity and inertia force @p inertia_force of
-   * each block of @p mesh relative to its centre of mass by the block's
-   * rotation in the increment @p d (area-weighted mean of its cells'
-   * rotations from @p stresses), with the row sums of @p mass as nodal
-   * masses. The small-rotation update moves points along straight lines:
-   * without this, a spinning block would not turn its velocity
-   * (doc/theory.md).
-   */
-  void
-  rotate_block_motion(const CrackableMesh        &mesh,
-                      const DofMap               &dof_map,
-                      const StressField          &stresses,
-                      const SparseMatrix<double> &mass,
-                      const Vector<double>       &d,
-                      Vector<double>             &velocity,
-                      Vector<double>             &inertia_force);
 } // namespace ndda
 
 #endif

@@ -14,6 +14,7 @@
 
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
+#include <ndda/physics/block_rotation.h>
 #include <ndda/physics/bolts.h>
 #include <ndda/physics/constraints.h>
 #include <ndda/physics/dof_map.h>
@@ -158,6 +159,9 @@ namespace ndda
       LinearSystem  linear_system;
       ExternalLoads loads;
       BoltSprings   bolts;
+      /// The frame of every block, which turns with it; the element
+      /// matrices and the linear solve are in these frames.
+      BlockFrames frames;
 
     private:
       dealii::TimerOutput &timer;

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_physics_block_rotation_h
+#define ndda_physics_block_rotation_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ndda/mesh/crackable_mesh.h>
+#include <ndda/physics/bolts.h>
+#include <ndda/physics/constraints.h>
+#include <ndda/physics/dof_map.h>
+#include <ndda/physics/element_cache.h>
+#include <ndda/physics/stress_field.h>
+
+namespace ndda
+{
+  /**
+   * The finite rotation of every block over a step, as DDA post-corrects
+   * its block rotation (doc/theory.md, "Finite rotation"). The linear
+   * solve of a step gives an increment @p d whose rigid rotation is
+   * linearised: d = t + theta J r + w (r relative to the block's centre,
+   * J the quarter turn, w the deformation), which moves points along the
+   * tangent and would enlarge a spinning block by theta^2 a step. For each
+   * block, with theta the area-weighted mean rotation of its cells in
+   * @p d (from @p stresses, on the present geometry):
+   *
+   * - @p d: theta J r is replaced by the exact (R(theta) - I) r, so that a
+   *   rigid rotation of any size moves every point on its circle;
+   * - @p velocity and @p inertia_force (the integrator's end state, from
+   *   the linear d) turn by R(theta) relative to the centre: the block's
+   *   motion turns with it (the centripetal acceleration of the rigid
+   *   rotation).
+   *
+   * The centre is the block's centre of mass (nodal masses: the row sums
+   * of @p mass), which the correction does not move, so momentum is kept;
+   * for a block with one constrained node (@p constraints) it is that
+   * node, so that a pinned block turns about its pin exactly. A block
+   * with two or more constrained nodes is left as solved: its
+   * constraints hold its rotation small, and a correction would move its
+   * constrained nodes off their prescribed values.
+   *
+   * Returns the rotation theta of every block (0 for those left).
+   *
+   * @ingroup physics
+   */
+  std::vector<double>
+  rotate_blocks(const CrackableMesh        &mesh,
+                const DofMap               &dof_map,
+                const ElementCache<2>      &element_cache,
+                const StressField          &stresses,
+                const Constraints          &constraints,
+                const SparseMatrix<double> &mass,
+                Vector<double>             &d,
+                Vector<double>             &velocity,
+                Vector<double>             &inertia_force);
+
+
+  /**
+   * A frame per block that turns with it, in which the linear system of a
+   * step is solved (doc/theory.md, "Finite rotation"). With Q the
+   * rotation of every node by its block's frame angle, the stiffness of a
+   * block that turned rigidly by its frame's angle since its element
+   * matrices were built is Q K Q^T, K the matrices as built (turned to
+   * the frame at the time: ElementCache keeps them so), and the mass
+   * matrix is Q M Q^T = M. So the system (A + S) d = b is solved as
+   * (A + Q^T S Q) (Q^T d) = Q^T b with A assembled once: a turning block
+   * changes neither its element matrices nor the factorization. The
+   * contact springs S are turned block by block as they are assembled
+   * (turn()).
+   *
+   * A block with a roller or a bolt anchor keeps the global frame (angle
+   * 0): rollers and bolt springs act in global directions. Constraints of
+   * both components of a node (fixed, displacement, velocity) hold in any
+   * frame (d = g is Q^T d = Q^T g), exact or penalty (k I = Q^T k I Q).
+   * Angles are kept per cell (a crack keeps cell indices; the two sides
+   * of a cracked block start with its angle).
+   *
+   * @ingroup physics
+   */
+  class BlockFrames
+  {
+  public:
+    using index = types::global_dof_index;
+
+    /** Zero angles for @p n_cells cells. */
+    void
+    reinit(const unsigned int n_cells);
+
+    /**
+     * Which blocks keep the global frame (those with a roller of
+     * @p constraints or an anchor of @p bolts), and the frame of every
+     * node of @p dof_map. Call after the dofs, constraints or bolts
+     * change.
+     */
+    void
+    setup(const CrackableMesh &mesh,
+          const DofMap        &dof_map,
+          const Constraints   &constraints,
+          const BoltSprings   &bolts);
+
+    /** Turn the frame of every free block by @p block_rotation. */
+    void
+    turn(const std::vector<double> &block_rotation);
+
+    /** The frame angle of every cell (rad). */
+    const std::vector<double> &
+    cell_angles() const
+    {
+      return angle;
+    }
+
+    /** Whether any frame is turned (else every transformation is the
+     * identity and is skipped). */
+    bool
+    turned() const
+    {
+      return any_turned;
+    }
+
+    /** v <- Q^T v: global components to frame components. */
+    void
+    to_frame(Vector<double> &v) const;
+
+    /** v <- Q v: frame components to global components. */
+    void
+    to_global(Vector<double> &v) const;
+
+    /**
+     * @p k <- Q^T @p k Q for a dense block @p k on the dofs @p dofs (both
+     * dofs of each node among them): a spring block assembled in global
+     * components, turned into the frames of its nodes.
+     */
+    void
+    turn(const std::vector<index> &dofs, FullMatrix<double> &k) const;
+
+  private:
+    /** Refresh the nodes' cos and sin from the cells' angles. */
+    void
+    update_nodes();
+
+    const DofMap             *dof_map = nullptr;
+    std::vector<double>       angle;
+    std::vector<bool>         global_frame;
+    std::vector<unsigned int> cell_block;
+    /// cos and sin of the frame of every node.
+    std::vector<double> node_cos, node_sin;
+    bool                any_turned = false;
+  };
+} // namespace ndda
+
+#endif
