@@ -17,6 +17,25 @@ namespace ndda
       double       weight = 0;
       /// Its number of constrained nodes.
       unsigned int constrained = 0;
+
+      /**
+       * Add a node at @p x of mass @p m, velocity @p v and inertia force
+       * @p f to the sums of the centre: weighted by its mass (the centre
+       * of mass), or by one for a constrained block (the mean of the
+       * constrained nodes, whose accelerations are f / m).
+       */
+      void
+      add_node(const Point<2>     &x,
+               const double        m,
+               const Tensor<1, 2> &v,
+               const Tensor<1, 2> &f)
+      {
+        const double w = constrained > 0 ? 1. : m;
+        position += w * x;
+        velocity += w * v;
+        acceleration += constrained > 0 && m > 0. ? f / m : f;
+        weight += w;
+      }
     };
 
     /** The present position of every node (the straight-sided cells'
@@ -123,16 +142,11 @@ namespace ndda
         Block &block     = blocks[node_block[n]];
         if (block.constrained > 0 && !constrained[n])
           continue;
-        const double m = block.constrained > 0 ? 1. : node_mass[n];
-        const double a =
-          block.constrained > 0 && node_mass[n] > 0. ? 1. / node_mass[n] : 1.;
-        for (unsigned int k = 0; k < 2; ++k)
-          {
-            block.position[k] += m * position[n][k];
-            block.velocity[k] += m * velocity[dofs[k]];
-            block.acceleration[k] += a * inertia_force[dofs[k]];
-          }
-        block.weight += m;
+        block.add_node(position[n],
+                       node_mass[n],
+                       Tensor<1, 2>({velocity[dofs[0]], velocity[dofs[1]]}),
+                       Tensor<1, 2>(
+                         {inertia_force[dofs[0]], inertia_force[dofs[1]]}));
       }
 
     std::vector<double> rotation(blocks.size());

@@ -131,7 +131,28 @@ namespace ndda
 
 
 
-    /** Add rho t int N^T N (mass quadrature in @p values) to @p mass. */
+    /**
+     * The density @p density0 scaled by initial_area / area, the area that
+     * of @p values (the cell quadrature) and initial_area the cell's first
+     * (set in @p d on the first call): the mass of a cell never changes.
+     */
+    template <int dim, typename CellData>
+    double
+    conserved_density(const FEValues<dim> &values,
+                      const double         density0,
+                      CellData            &d)
+    {
+      double area = 0;
+      for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
+        area += values.JxW(q);
+      if (d.initial_area == 0)
+        d.initial_area = area;
+      return density0 * d.initial_area / area;
+    }
+
+
+
+    /** Set @p mass to rho t int N^T N (mass quadrature in @p values). */
     template <int dim>
     void
     add_mass_matrix(const FEValues<dim> &values,
@@ -139,7 +160,8 @@ namespace ndda
                     FullMatrix<double>  &mass)
     {
       const FEValuesExtractors::Vector u(0);
-      const unsigned int               n_dofs = mass.m();
+      const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
+      mass.reinit(n_dofs, n_dofs);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
@@ -175,7 +197,10 @@ namespace ndda
                   CellData                                   &d)
     {
       const FEValuesExtractors::Vector u(0);
-      const unsigned int               n_dofs = d.stiffness.m();
+      const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
+      d.stiffness.reinit(n_dofs, n_dofs);
+      d.gradient.resize(values.n_quadrature_points * n_dofs);
+      d.weight.resize(values.n_quadrature_points);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         {
           d.weight[q] = t * values.JxW(q);
@@ -218,8 +243,7 @@ namespace ndda
     const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses,
     const std::vector<double>                               *frame_angles)
   {
-    const auto        &fe     = dof_handler.get_fe();
-    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    const auto &fe = dof_handler.get_fe();
     AssertThrow(quadrature.size() > 0 && mass_quadrature.size() > 0,
                 ExcMessage("ElementCache::update(): call set_quadratures() "
                            "with the element's quadratures first."));
@@ -283,19 +307,10 @@ namespace ndda
                                       (*stresses)[c][q]) :
                    tangents[cell->material_id()];
 
-        d.stiffness.reinit(n_dofs, n_dofs);
-        d.mass.reinit(n_dofs, n_dofs);
-        d.gradient.resize(n_q_points * n_dofs);
-        d.weight.resize(n_q_points);
         d.viscosity_over_density =
           material.density > 0 ? material.viscosity / material.density : 0.;
-        double area = 0;
-        for (unsigned int q = 0; q < n_q_points; ++q)
-          area += fe_values.JxW(q);
-        if (d.initial_area == 0)
-          d.initial_area = area;
-        // Mass is conserved: the current density is rho_0 A_0 / A.
-        const double density = material.density * d.initial_area / area;
+        const double density =
+          conserved_density(fe_values, material.density, d);
 
         add_operators(fe_values, C, t, d);
         d.frame_angle = frame_angle;
