@@ -53,13 +53,16 @@ namespace ndda
     TimerOutput::Scope scope(timer, "setup");
     scene::build_mesh(parameters, user_triangulation.get(), mesh);
     scene_half_height = scene::half_height(mesh);
+    fem.setup_kinematics(parameters);
 
     setup_dofs();
     fem.setup_constraints(parameters);
+    fem.setup_system(parameters);
     setup_contacts();
     fracture_check.setup(mesh,
                          fem.cell_material,
-                         scene::material_strengths(parameters.materials));
+                         scene::material_strengths(parameters.materials),
+                         fem.meshed_cells());
     fem.setup_loads(parameters);
     measure_points.setup(
       mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, false);
@@ -150,7 +153,8 @@ namespace ndda
 
   template <int dim>
   void
-  Simulator<dim>::build_element_matrices(const bool only_moved_cells)
+  Simulator<dim>::build_element_matrices(const bool only_moved_cells,
+                                         const bool always)
   {
     TimerOutput::Scope scope(timer, "element matrices");
     // The first step uses the element matrices that setup() computed (it
@@ -158,7 +162,7 @@ namespace ndda
     // on the stress is rebuilt from the initial stresses); later steps
     // recompute those of the cells that moved.
     if (!fem.update_matrices(
-          parameters, only_moved_cells, displacement, stresses))
+          parameters, only_moved_cells, displacement, stresses, always))
       return;
     ++n_matrix_rebuilds;
     compute_internal_force();
@@ -265,6 +269,8 @@ namespace ndda
                     kinematics.inertia_force);
     // The blocks' frames turn with them: their matrices stay.
     fem.frames.turn(rotation);
+    // A rigid block in the global frame that turned needs new lines.
+    block_lines_stale = fem.reduced_blocks.stale(rotation);
     if (parameters.contact.enabled)
       contacts.end_step(motion);
 
@@ -355,12 +361,14 @@ namespace ndda
       measure_points.setup(
         mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, true);
     });
+    fem.setup_system(parameters);
     setup_contacts();
     if (parameters.contact.enabled)
       contacts.carry_memory_from(old_contacts);
     fracture_check.setup(mesh,
                          fem.cell_material,
-                         scene::material_strengths(parameters.materials));
+                         scene::material_strengths(parameters.materials),
+                         fem.meshed_cells());
 
     // A crack changes no cell's shape (cells keep their index, vertex
     // order and geometry; only dof numbers change): element matrices are
@@ -395,10 +403,21 @@ namespace ndda
   {
     if (step_number > 0)
       {
-        build_element_matrices(true);
+        if (block_lines_stale)
+          {
+            fem.setup_system(parameters);
+            block_lines_stale = false;
+            build_element_matrices(true, true);
+          }
+        else
+          build_element_matrices(true);
         return;
       }
     build_element_matrices(false);
+    // A reduced block moves in its space from the start: its initial
+    // velocity is fitted, keeping momentum and angular momentum.
+    fem.reduced_blocks.project(fem.linear_system.get_mass_matrix(),
+                               kinematics.velocity);
     if (parameters.control.time_integrator->needs_initial_acceleration())
       kinematics.inertia_force =
         fem.initial_inertia_force(time, displacement, internal_force);

@@ -118,18 +118,22 @@ main(int argc, char **argv)
   // only what vibrates), and the largest stress below 3 rho omega^2 R^2
   // (R = sqrt(0.5) m, the corner's distance), the scale of the real
   // centrifugal stress.
+  //
+  // The same for the affine and the rigid block (Control/Kinematics).
   struct RotationCase
   {
     std::string  integrator;
     unsigned int degree;
     double       omega;
     std::string  tolerance;
+    std::string  model = "meshed";
   };
   std::vector<RotationCase> cases;
-  for (const std::string integrator : {"Newmark", "DDA"})
-    for (const unsigned int degree : {1u, 2u})
-      for (const double omega : {1., 2 * M_PI})
-        cases.push_back({integrator, degree, omega, "1e-3"});
+  for (const std::string model : {"meshed", "affine", "rigid"})
+    for (const std::string integrator : {"Newmark", "DDA"})
+      for (const unsigned int degree : {1u, 2u})
+        for (const double omega : {1., 2 * M_PI})
+          cases.push_back({integrator, degree, omega, "1e-3", model});
   cases.push_back({"Newmark", 1, 2 * M_PI, "0"});
   cases.push_back({"Newmark", 1, 2 * M_PI, "0.5"});
   for (const auto &c : cases)
@@ -149,7 +153,8 @@ main(int argc, char **argv)
                    ratio.size(),
                    ratio +
                      "\n  set Element degree = " + std::to_string(c.degree) +
-                     "\n  set Matrix update tolerance = " + c.tolerance);
+                     "\n  set Matrix update tolerance = " + c.tolerance +
+                     "\n  set Kinematics = " + c.model);
       ndda::Simulator<2> simulator(read_parameters(text, "free_rotation"));
       simulator.setup();
       const double area0     = simulator.get_mesh().area();
@@ -191,8 +196,8 @@ main(int argc, char **argv)
                            (!newmark || kinetic_change < 1e-6) &&
                            largest_stress < scale;
       std::ostringstream name;
-      name << c.integrator << ".P" << c.degree << ".w"
-           << (c.omega == 1. ? "1" : "2pi")
+      name << (c.model == "meshed" ? "" : c.model + ".") << c.integrator << ".P"
+           << c.degree << ".w" << (c.omega == 1. ? "1" : "2pi")
            << (c.tolerance == "1e-3" ? "" : ".tol" + c.tolerance);
       std::cout << "free rotation, " << name.str() << ", " << n_steps
                 << " steps: area change " << std::scientific

@@ -50,6 +50,7 @@ subsection Control
   set Time step       = {dt}
   set End time        = 1
   set Maximum displacement ratio = 0.01
+  set Kinematics = {model}
 end
 subsection Contact
   set Penalty factor = {penalty}
@@ -107,7 +108,8 @@ end
   run(const std::string &integrator,
       const double       dt,
       const double       phi,
-      const double       penalty)
+      const double       penalty,
+      const std::string &model = "meshed")
   {
     const double      length = 5.; // slope length
     const double      base_x = length * std::cos(slope);
@@ -116,7 +118,8 @@ end
     std::string       top_comma = top;
     const auto        parameters =
       read_parameters(substitute(scene,
-                                 {{"integrator", integrator},
+                                 {{"model", model},
+                                  {"integrator", integrator},
                                   {"dt", std::to_string(dt)},
                                   {"penalty", std::to_string(penalty)},
                                   {"phi", std::to_string(phi)},
@@ -230,6 +233,37 @@ main(int argc, char **argv)
       record(key + "met", met(std::abs(r.displacement) < 1e-4));
       report("stick, penalty " + std::to_string(penalty), r, key);
       check(std::abs(r.displacement) < 1e-4, "creep below 0.1 mm");
+    }
+
+  // The same slide, frictionless slide and stick with the block and the
+  // incline as affine (Shi's DDA blocks) and as rigid blocks: the same
+  // targets.
+  for (const std::string model : {"affine", "rigid"})
+    {
+      const Result slide      = run("DDA", 5e-4, 20, 100, model);
+      const Result free       = run("DDA", 5e-4, 0, 100, model);
+      const Result stick      = run("DDA", 1e-3, 35, 100, model);
+      const double error      = slide.displacement / expected - 1;
+      const double free_error = free.displacement / free_slide - 1;
+      std::cout << model << ": slide " << slide.displacement << " m, error "
+                << 100 * error << " %; frictionless " << free.displacement
+                << " m, error " << 100 * free_error << " %; creep at 35 deg "
+                << stick.displacement << " m" << std::endl;
+      const std::string key = "sliding_block." + model + ".";
+      record(key + "error", 100 * error, 2);
+      record(key + "free_error", 100 * free_error, 1);
+      record(key + "creep", stick.displacement * 1e6, 2);
+      record(key + "ms_per_step", 1e3 * slide.seconds / slide.steps, 2);
+      record(key + "met",
+             met(std::abs(error) < 5e-3 && std::abs(free_error) < 1e-3 &&
+                 std::abs(stick.displacement) < 1e-4));
+      report(model + ", friction", slide, key + "friction.");
+      report(model + ", frictionless", free, key + "free.");
+      report(model + ", stick", stick, key + "stick.");
+      check(std::abs(error) < 5e-3, model + ": sliding within 0.5 %");
+      check(std::abs(free_error) < 1e-3, model + ": frictionless within 0.1 %");
+      check(std::abs(stick.displacement) < 1e-4,
+            model + ": creep below 0.1 mm");
     }
   std::cout << "OK" << std::endl;
 }

@@ -333,9 +333,11 @@ namespace ndda
     void
     setup_contacts();
     /** The element matrices of the cells that moved (all, if not
-     * @p only_moved_cells) and what depends on them. */
+     * @p only_moved_cells) and what depends on them; the global matrices
+     * also if no cell moved, with @p always. */
     void
-    build_element_matrices(const bool only_moved_cells);
+    build_element_matrices(const bool only_moved_cells,
+                           const bool always = false);
     /** Internal force and strain energy of the present stresses. */
     void
     compute_internal_force();
@@ -436,7 +438,10 @@ namespace ndda
     double               last_step_time              = 0;
     double               max_increment               = 0;
     bool                 is_set_up                   = false;
-    bool                 parameters_from_file        = false;
+    /// A reduced block's constraint lines depend on its orientation and
+    /// it turned: set the system up again before the next step.
+    bool block_lines_stale    = false;
+    bool parameters_from_file = false;
 
     fracture::EdgeFailureCheck fracture_check;
     unsigned int               n_crack_events  = 0;

@@ -12,7 +12,8 @@ namespace ndda
     EdgeFailureCheck::setup(
       const CrackableMesh                        &mesh,
       const std::vector<unsigned int>            &cell_material,
-      const std::vector<std::optional<Strength>> &material_strength)
+      const std::vector<std::optional<Strength>> &material_strength,
+      const std::vector<bool>                    &may_crack)
     {
       edges.clear();
       strength.clear();
@@ -28,6 +29,9 @@ namespace ndda
         {
           if (mesh.is_cracked(edge.vertices[0], edge.vertices[1]))
             continue; // a closed crack (both tips inside a block)
+          if (!may_crack.empty() &&
+              (!may_crack[edge.cells[0]] || !may_crack[edge.cells[1]]))
+            continue;
           const auto &s0 = material_strength[cell_material[edge.cells[0]]];
           const auto &s1 = material_strength[cell_material[edge.cells[1]]];
           if (!s0 || !s1)

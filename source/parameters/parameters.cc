@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ndda/contact/contact_law.h>
+#include <ndda/kinematics/block_kinematics.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/constitutive_law.h>
 #include <ndda/physics/finite_element.h>
@@ -212,6 +213,17 @@ namespace ndda
                           "multiple of the largest Young's modulus times the "
                           "thickness (N/m).");
         prm.declare_entry(
+          "Kinematics",
+          "meshed",
+          Patterns::Selection(
+            kinematics::BlockKinematicsRegistry::joined_names()),
+          kinematics::BlockKinematicsRegistry::documentation(
+            "How the blocks move, unless a block's or region's own "
+            "Kinematics entry says otherwise (doc/design.md, \"Block "
+            "kinematics\"). Every model keeps the block's nodes for "
+            "contacts, loads, constraints, bolts and output, and turns "
+            "blocks exactly."));
+        prm.declare_entry(
           "Matrix update tolerance",
           "1e-3",
           Patterns::Double(0.),
@@ -278,6 +290,7 @@ namespace ndda
                   ExcMessage("Control/Penalty factor: must be greater than "
                              "zero with 'Constraint method = penalty'."));
       matrix_update_tolerance = prm.get_double("Matrix update tolerance");
+      kinematics              = prm.get("Kinematics");
 
       // The element: Finite element, or else FE_SimplexP(Element degree).
       const std::string by_degree =

@@ -5,6 +5,7 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <ndda/base/utilities.h>
+#include <ndda/kinematics/reduced_blocks.h>
 #include <ndda/physics/constraints.h>
 
 namespace ndda
@@ -187,10 +188,39 @@ namespace ndda
           }
       }
 
+    reduced = nullptr;
+    build_lines();
+  }
+
+
+
+  void
+  Constraints::tie_blocks(const kinematics::ReducedBlocks &blocks)
+  {
+    reduced = &blocks;
+    build_lines();
+  }
+
+
+
+  bool
+  Constraints::in_reduced_block(const index dof) const
+  {
+    return reduced != nullptr && reduced->is_reduced(dof);
+  }
+
+
+
+  void
+  Constraints::build_lines()
+  {
     constraints.clear();
     if (exact())
       for (const auto &nc : node_constraints)
         {
+          // A reduced block's constraints are in its lines.
+          if (in_reduced_block(nc.dofs[0]))
+            continue;
           if (nc.type != parameters::ConstraintType::roller)
             {
               constraints.add_line(nc.dofs[0]);
@@ -209,7 +239,55 @@ namespace ndda
                                     -nc.normal[1 - k] / nc.normal[k]);
             }
         }
+    if (reduced != nullptr)
+      reduced->add_lines(constraints);
     constraints.close();
+  }
+
+
+
+  Tensor<1, 2>
+  Constraints::target_increment(const NodeConstraint &nc,
+                                const double          t0,
+                                const double          dt,
+                                const Vector<double> &displacement) const
+  {
+    Tensor<1, 2> current;
+    for (unsigned int d = 0; d < 2; ++d)
+      current[d] = displacement[nc.dofs[d]];
+    const Point<2> x0 = nc.position - current;
+    Tensor<1, 2>   target;
+    switch (nc.type)
+      {
+        case parameters::ConstraintType::fixed:
+          target = -current;
+          break;
+        case parameters::ConstraintType::displacement:
+          {
+            auto &f = *functions[nc.function];
+            f.set_time(t0 + dt);
+            for (unsigned int d = 0; d < 2; ++d)
+              target[d] = f.value(x0, d) - current[d];
+            break;
+          }
+        case parameters::ConstraintType::velocity:
+          {
+            auto &f = *functions[nc.function];
+            f.set_time(t0 + 0.5 * dt);
+            for (unsigned int d = 0; d < 2; ++d)
+              target[d] = f.value(x0, d) * dt;
+            break;
+          }
+        case parameters::ConstraintType::roller:
+          {
+            auto &f = *functions[nc.function];
+            f.set_time(t0 + dt);
+            // Only the normal part is prescribed.
+            target = (f.value(x0, 0) - nc.normal * current) * nc.normal;
+            break;
+          }
+      }
+    return target;
   }
 
 
@@ -221,57 +299,27 @@ namespace ndda
                                     Vector<double>       &increment) const
   {
     increment = 0;
-    for (const auto &nc : node_constraints)
+    std::vector<Tensor<1, 2>> targets(node_constraints.size());
+    for (unsigned int i = 0; i < node_constraints.size(); ++i)
       {
-        Tensor<1, 2> current;
-        for (unsigned int d = 0; d < 2; ++d)
-          current[d] = displacement[nc.dofs[d]];
-        const Point<2> x0 = nc.position - current;
-        Tensor<1, 2>   target_increment;
-        switch (nc.type)
-          {
-            case parameters::ConstraintType::fixed:
-              target_increment = -current;
-              break;
-            case parameters::ConstraintType::displacement:
-              {
-                auto &f = *functions[nc.function];
-                f.set_time(t0 + dt);
-                for (unsigned int d = 0; d < 2; ++d)
-                  target_increment[d] = f.value(x0, d) - current[d];
-                break;
-              }
-            case parameters::ConstraintType::velocity:
-              {
-                auto &f = *functions[nc.function];
-                f.set_time(t0 + 0.5 * dt);
-                for (unsigned int d = 0; d < 2; ++d)
-                  target_increment[d] = f.value(x0, d) * dt;
-                break;
-              }
-            case parameters::ConstraintType::roller:
-              {
-                auto &f = *functions[nc.function];
-                f.set_time(t0 + dt);
-                // Only the normal part is prescribed.
-                target_increment =
-                  (f.value(x0, 0) - nc.normal * current) * nc.normal;
-                break;
-              }
-          }
+        const auto &nc = node_constraints[i];
+        targets[i]     = target_increment(nc, t0, dt, displacement);
         if (exact() && nc.type == parameters::ConstraintType::roller)
           {
             // Put the whole normal increment on the dependent component,
-            // see setup().
+            // see build_lines().
             const unsigned int k =
               std::abs(nc.normal[1]) >= std::abs(nc.normal[0]) ? 1 : 0;
-            increment[nc.dofs[k]] =
-              (target_increment * nc.normal) / nc.normal[k];
+            increment[nc.dofs[k]] = (targets[i] * nc.normal) / nc.normal[k];
           }
         else
           for (unsigned int d = 0; d < 2; ++d)
-            increment[nc.dofs[d]] = target_increment[d];
+            increment[nc.dofs[d]] = targets[i][d];
       }
+    // A reduced block takes the increment of its unknowns that meets its
+    // constraints, on all of its nodes.
+    if (reduced != nullptr && exact())
+      reduced->prescribed_increment(targets, increment);
   }
 
 

@@ -216,8 +216,10 @@ namespace ndda
             (changed ? condensed_matrix : system_matrix).vmult(tmp, g);
             b -= tmp;
           }
-        affine.condense(b);
       }
+    // The lines of the exact constraints, and of the reduced blocks (with
+    // either method).
+    affine.condense(b);
     unsigned int iterations = 0;
     if (changed)
       {
@@ -245,11 +247,9 @@ namespace ndda
       }
     else
       iterations = linear_solver->solve(d, b);
+    affine.distribute(d);
     if (constraints.exact())
-      {
-        affine.distribute(d);
-        d += g;
-      }
+      d += g;
     if (in_frame)
       frames->to_global(d);
     return iterations;
@@ -269,6 +269,9 @@ namespace ndda
       for (const auto &nc : constraints.constrained_nodes())
         for (const auto dof : nc.dofs)
           {
+            // A reduced block's node follows its block.
+            if (constraints.in_reduced_block(dof))
+              continue;
             rhs[dof] = 0;
             for (auto entry = m.begin(dof); entry != m.end(dof); ++entry)
               entry->value() = (entry->column() == dof ? 1. : 0.);

@@ -6,6 +6,7 @@
 
 #include <ndda/physics/finite_element.h>
 #include <ndda/scene/discretization.h>
+#include <ndda/scene/scene.h>
 
 #include <algorithm>
 #include <sstream>
@@ -79,17 +80,60 @@ namespace ndda
       constraints.setup(parameters.boundary_conditions,
                         parameters.control.constraint_method,
                         nodes);
+      // Bolts couple two nodes that may lie in different blocks.
+      bolts.setup(parameters.bolts, nodes);
+    }
+
+
+
+    void
+    Discretization::setup_kinematics(const parameters::Parameters &parameters)
+    {
+      models.clear();
+      const auto states = initial_states(parameters, mesh);
+      std::vector<const kinematics::BlockKinematics *> block_model;
+      for (const auto &state : states)
+        {
+          auto known =
+            std::find_if(models.begin(), models.end(), [&](const auto &m) {
+              return m.first == state.kinematics;
+            });
+          if (known == models.end())
+            {
+              models.emplace_back(state.kinematics,
+                                  kinematics::BlockKinematicsRegistry::create(
+                                    state.kinematics));
+              known = models.end() - 1;
+            }
+          block_model.push_back(known->second.get());
+        }
+      cell_model.resize(mesh.get_triangulation().n_active_cells());
+      for (unsigned int c = 0; c < cell_model.size(); ++c)
+        cell_model[c] = block_model[mesh.block_of_cell(c)];
+    }
+
+
+
+    void
+    Discretization::setup_system(const parameters::Parameters &parameters)
+    {
+      frames.setup(mesh, dof_map, constraints, bolts);
+      linear_system.set_frames(&frames);
+      // The model of each block: that of its cells (a crack keeps them).
+      std::vector<const kinematics::BlockKinematics *> block_model(
+        mesh.n_blocks(), nullptr);
+      for (unsigned int c = 0; c < cell_model.size(); ++c)
+        block_model[mesh.block_of_cell(c)] = cell_model[c];
+      reduced_blocks.setup(mesh, dof_map, frames, block_model, constraints);
+      constraints.tie_blocks(reduced_blocks);
+
       DynamicSparsityPattern dsp(dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(dof_handler,
                                       dsp,
                                       constraints.affine_constraints(),
                                       true);
-      // Bolts couple two nodes that may lie in different blocks.
-      bolts.setup(parameters.bolts, nodes);
       bolts.add_couplings(dsp);
       linear_system.reinit(dsp, constraints, parameters.contact.enabled);
-      frames.setup(mesh, dof_map, constraints, bolts);
-      linear_system.set_frames(&frames);
     }
 
 
@@ -166,8 +210,22 @@ namespace ndda
     Discretization::summary() const
     {
       std::ostringstream out;
-      out << "  blocks: " << mesh.n_blocks()
-          << ", cells: " << mesh.get_triangulation().n_active_cells()
+      out << "  blocks: " << mesh.n_blocks();
+      if (!reduced_blocks.empty())
+        {
+          // The blocks of each model, e.g. "(rigid 2, meshed 5)".
+          std::string separator = " (";
+          for (const auto &[name, model] : models)
+            {
+              out << separator << name << " "
+                  << (model->n_unknowns() == 0 ?
+                        mesh.n_blocks() - reduced_blocks.n_reduced() :
+                        reduced_blocks.n_blocks_of(model.get()));
+              separator = ", ";
+            }
+          out << ")";
+        }
+      out << ", cells: " << mesh.get_triangulation().n_active_cells()
           << ", vertices: " << mesh.get_triangulation().n_vertices()
           << ", degrees of freedom: " << dof_handler.n_dofs() << " ("
           << fe->base_element(0).get_name() << ")\n"

@@ -112,15 +112,10 @@ namespace ndda
 
 
 
-    void
-    set_initial_state(const parameters::Parameters &parameters,
-                      const CrackableMesh          &mesh,
-                      const dealii::DoFHandler<2>  &dof_handler,
-                      const dealii::Mapping<2>     &mapping,
-                      StressField                  &stresses,
-                      dealii::Vector<double>       &velocity)
+    std::vector<parameters::InitialState>
+    initial_states(const parameters::Parameters &parameters,
+                   const CrackableMesh          &mesh)
     {
-      // The state of each block: its own, or its region's.
       const auto                           &geometry = parameters.geometry;
       std::vector<parameters::InitialState> block_state(mesh.n_blocks());
       const auto                           &names = mesh.get_block_names();
@@ -133,6 +128,24 @@ namespace ndda
             if (names[b].rfind(geometry.regions[i].name + ".", 0) == 0)
               block_state[b] = geometry.region_states[i];
         }
+      for (auto &state : block_state)
+        if (state.kinematics.empty())
+          state.kinematics = parameters.control.kinematics;
+      return block_state;
+    }
+
+
+
+    void
+    set_initial_state(const parameters::Parameters &parameters,
+                      const CrackableMesh          &mesh,
+                      const dealii::DoFHandler<2>  &dof_handler,
+                      const dealii::Mapping<2>     &mapping,
+                      StressField                  &stresses,
+                      dealii::Vector<double>       &velocity)
+    {
+      const std::vector<parameters::InitialState> block_state =
+        initial_states(parameters, mesh);
       std::vector<std::unique_ptr<FunctionParser<2>>> initial_velocity;
       for (const auto &state : block_state)
         initial_velocity.push_back(make_function(state.velocity, 2, false));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <ndda/kinematics/block_kinematics.h>
 #include <ndda/parameters/entries.h>
 #include <ndda/scene/scene_parameters.h>
 
@@ -28,6 +29,13 @@ namespace ndda
           Patterns::Anything(),
           "Initial velocity v_x; v_y (m/s) as functions of x and y, e.g. "
           "'-2*y; 2*x' for a rotation about the origin at 2 rad/s.");
+        prm.declare_entry(
+          "Kinematics",
+          "",
+          Patterns::Anything(),
+          "How the block moves, one of " +
+            kinematics::BlockKinematicsRegistry::joined_names(", ") +
+            " (see Control/Kinematics). Empty: Control/Kinematics.");
       }
 
       InitialState
@@ -40,6 +48,9 @@ namespace ndda
         state.stress        = {{stress[0], stress[1], stress[2]}};
         state.velocity      = prm.get("Initial velocity");
         check_function(state.velocity, 2, "x,y", where + "/Initial velocity");
+        state.kinematics = Utilities::trim(prm.get("Kinematics"));
+        if (!state.kinematics.empty())
+          kinematics::check_name(state.kinematics, where + "/Kinematics");
         return state;
       }
 

@@ -54,13 +54,15 @@ namespace ndda
        * Find the interior edges of @p mesh between two cells whose
        * materials fracture (@p material_strength of the cell's material id,
        * from @p cell_material, is set), except cracks that are closed at
-       * both tips; the strength of an edge is the weaker of its two
-       * cells'.
+       * both tips, and except edges of cells that @p may_crack excludes
+       * (if not empty: the cells of blocks that are not meshed); the
+       * strength of an edge is the weaker of its two cells'.
        */
       void
       setup(const CrackableMesh                        &mesh,
             const std::vector<unsigned int>            &cell_material,
-            const std::vector<std::optional<Strength>> &material_strength);
+            const std::vector<std::optional<Strength>> &material_strength,
+            const std::vector<bool>                    &may_crack = {});
 
       /** Whether some material of the scene fractures. */
       bool

@@ -66,6 +66,8 @@ namespace ndda
       ConstraintMethod                            constraint_method;
       double                                      penalty_factor;
       double                                      matrix_update_tolerance;
+      /// The scene's default block kinematics model (by name).
+      std::string kinematics;
 
       /// The scalar element by name, as make_element() takes it
       /// (physics/finite_element.h): Finite element, or else

@@ -12,6 +12,8 @@
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/stress_field.h>
 
+#include <utility>
+
 namespace ndda
 {
   /**
@@ -107,6 +109,20 @@ namespace ndda
     cell_angles() const
     {
       return angle;
+    }
+
+    /** The cos and sin of the frame of node @p node (of the DofMap). */
+    std::pair<double, double>
+    node_rotation(const unsigned int node) const
+    {
+      return {node_cos[node], node_sin[node]};
+    }
+
+    /** Whether block @p block keeps the global frame. */
+    bool
+    keeps_global_frame(const unsigned int block) const
+    {
+      return global_frame[block];
     }
 
     /** Whether any frame is turned (else every transformation is the

@@ -25,6 +25,11 @@
 
 namespace ndda
 {
+  namespace kinematics
+  {
+    class ReducedBlocks;
+  }
+
   /**
    * The nodes of the finite element space, located: the support point and
    * vector component of every dof, the other dof of the same node, and
@@ -53,12 +58,12 @@ namespace ndda
     std::vector<index>
     boundary_nodes_on(const geometry::Segment &segment) const;
 
-    const CrackableMesh               &mesh;
-    std::vector<Point<2>>              support_points;
-    std::vector<unsigned int>          component;
-    std::vector<index>                 partner;
-    std::vector<bool>                  on_boundary;
-    double                             tolerance;
+    const CrackableMesh      &mesh;
+    std::vector<Point<2>>     support_points;
+    std::vector<unsigned int> component;
+    std::vector<index>        partner;
+    std::vector<bool>         on_boundary;
+    double                    tolerance;
   };
 
   /**
@@ -98,6 +103,20 @@ namespace ndda
     setup(const parameters::BoundaryConditions &conditions,
           const parameters::ConstraintMethod    method,
           const NodeLocator                    &nodes);
+
+    /**
+     * Tie the nodes of the reduced blocks (rigid, affine) to their
+     * unknowns: their lines replace the lines of their nodes' exact
+     * constraints, which @p blocks took into account, and
+     * prescribed_increment() fills their nodes (@p blocks is referenced).
+     * setup() unties them again.
+     */
+    void
+    tie_blocks(const kinematics::ReducedBlocks &blocks);
+
+    /** Whether @p dof belongs to a reduced block (tie_blocks()). */
+    bool
+    in_reduced_block(const index dof) const;
 
     const dealii::AffineConstraints<double> &
     affine_constraints() const
@@ -142,7 +161,21 @@ namespace ndda
                        Vector<double>       &rhs) const;
 
   private:
+    /** The AffineConstraints of the exact constraints of the nodes of
+     * meshed blocks and the lines of the reduced blocks. */
+    void
+    build_lines();
+
+    /** The increment (global components) that brings the node of @p nc
+     * to its prescribed value at @p t0 + @p dt. */
+    Tensor<1, 2>
+    target_increment(const NodeConstraint &nc,
+                     const double          t0,
+                     const double          dt,
+                     const Vector<double> &displacement) const;
+
     parameters::ConstraintMethod method = parameters::ConstraintMethod::exact;
+    const kinematics::ReducedBlocks                        *reduced = nullptr;
     dealii::AffineConstraints<double>                       constraints;
     std::vector<NodeConstraint>                             node_constraints;
     std::vector<std::unique_ptr<dealii::FunctionParser<2>>> functions;

@@ -12,6 +12,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ndda/kinematics/block_kinematics.h>
+#include <ndda/kinematics/reduced_blocks.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/block_rotation.h>
@@ -25,6 +27,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ndda
@@ -63,11 +66,27 @@ namespace ndda
                  const bool                    element_matrices);
 
       /**
-       * Constraints, bolts and the sparsity pattern of the linear system,
-       * found by position on the present geometry.
+       * Constraints and bolts, found by position on the present geometry
+       * (the scene's initial geometry: on_initial_geometry()).
        */
       void
       setup_constraints(const parameters::Parameters &parameters);
+
+      /**
+       * The kinematics model of every cell, from its block's (or region's)
+       * Kinematics entry or Control/Kinematics. Once, after the mesh is
+       * built: a crack keeps the cells and their models.
+       */
+      void
+      setup_kinematics(const parameters::Parameters &parameters);
+
+      /**
+       * After setup_constraints(), on the present geometry: the blocks'
+       * frames, the reduced blocks (rigid, affine) tied to their unknowns,
+       * and the sparsity pattern of the linear system.
+       */
+      void
+      setup_system(const parameters::Parameters &parameters);
 
       /** Loads: points and loaded faces on the present geometry. */
       void
@@ -125,6 +144,17 @@ namespace ndda
         mesh.move_vertices(u);
       }
 
+      /** Whether each cell belongs to a meshed block (the cells that may
+       * crack). */
+      std::vector<bool>
+      meshed_cells() const
+      {
+        std::vector<bool> meshed(cell_model.size());
+        for (unsigned int c = 0; c < meshed.size(); ++c)
+          meshed[c] = cell_model[c]->n_unknowns() == 0;
+        return meshed;
+      }
+
       /**
        * One line for the log: blocks, cells, vertices, degrees of freedom
        * (and the element), constrained nodes.
@@ -162,6 +192,14 @@ namespace ndda
       /// The frame of every block, which turns with it; the element
       /// matrices and the linear solve are in these frames.
       BlockFrames frames;
+      /// The block kinematics models in use, by name.
+      std::vector<
+        std::pair<std::string, std::unique_ptr<kinematics::BlockKinematics>>>
+        models;
+      /// The model of every cell (of its block).
+      std::vector<const kinematics::BlockKinematics *> cell_model;
+      /// The blocks that move with fewer unknowns than their mesh has.
+      kinematics::ReducedBlocks reduced_blocks;
 
     private:
       dealii::TimerOutput &timer;

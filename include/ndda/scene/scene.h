@@ -56,6 +56,15 @@ namespace ndda
     half_height(const CrackableMesh &mesh);
 
     /**
+     * The initial state of every block of @p mesh: its own
+     * (Geometry/<block>), or its region's, with the kinematics model of
+     * Control/Kinematics where the block names none.
+     */
+    std::vector<parameters::InitialState>
+    initial_states(const parameters::Parameters &parameters,
+                   const CrackableMesh          &mesh);
+
+    /**
      * The initial stress and velocity of every block (Geometry/<block>/
      * Initial stress and Initial velocity, or its region's): @p stresses
      * (reinit before) and the nodal @p velocity.
