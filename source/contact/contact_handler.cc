@@ -146,51 +146,36 @@ namespace ndda
 
 
     void
-    ContactHandler::assemble(dealii::SparseMatrix<double> &matrix,
-                             dealii::Vector<double>       &rhs) const
+    ContactHandler::assemble(
+      const std::function<
+        void(const std::vector<dealii::types::global_dof_index> &,
+             const dealii::FullMatrix<double> &)> &add,
+      dealii::Vector<double>                      &rhs) const
     {
       const double kn = settings.normal_stiffness;
-      // The springs' stiffness of one contact as a dense block, added to
-      // the sparse matrix row by row (one search per row, not per entry);
-      // one block for all contacts, so that it is allocated once.
+      // The springs' stiffness of one contact as a dense block; one block
+      // for all contacts, so that it is allocated once.
       dealii::FullMatrix<double> k;
       const bool                 turned = frames != nullptr && frames->turned();
+      std::vector<dealii::types::global_dof_index> ab(4);
       for (const ContactPair &c : contacts)
         {
-          if (c.state == State::vertex_spring && turned)
-            {
-              // The same spring as below, as a dense block turned into
-              // the frames of the two vertices' blocks.
-              const auto &da = dofs->vertex_dofs[c.vertex_a];
-              const auto &db = dofs->vertex_dofs[c.vertex_b];
-              const std::vector<dealii::types::global_dof_index> ab = {da[0],
-                                                                       da[1],
-                                                                       db[0],
-                                                                       db[1]};
-              k.reinit(4, 4);
-              for (unsigned int i = 0; i < 4; ++i)
-                {
-                  k(i, i)           = kn;
-                  k(i, (i + 2) % 4) = -kn;
-                }
-              frames->turn(ab, k);
-              for (unsigned int i = 0; i < 4; ++i)
-                matrix.add(ab[i], 4, ab.data(), &k(i, 0), false, false);
-              continue;
-            }
           if (c.state == State::vertex_spring)
             {
               // Thesis 6.5-6.12: a spring on the relative displacement of
               // the two vertices in this step, a hinge between them.
               const auto &da = dofs->vertex_dofs[c.vertex_a];
               const auto &db = dofs->vertex_dofs[c.vertex_b];
-              for (unsigned int i = 0; i < 2; ++i)
+              ab             = {da[0], da[1], db[0], db[1]};
+              k.reinit(4, 4);
+              for (unsigned int i = 0; i < 4; ++i)
                 {
-                  matrix.add(da[i], da[i], kn);
-                  matrix.add(db[i], db[i], kn);
-                  matrix.add(da[i], db[i], -kn);
-                  matrix.add(db[i], da[i], -kn);
+                  k(i, i)           = kn;
+                  k(i, (i + 2) % 4) = -kn;
                 }
+              if (turned)
+                frames->turn(ab, k);
+              add(ab, k);
               continue;
             }
           if (c.state == State::open || c.chosen == invalid)
@@ -201,8 +186,7 @@ namespace ndda
           settings.law->add_springs(o, c, c.scale, settings, &k, rhs);
           if (turned)
             frames->turn(o.dofs, k);
-          for (unsigned int i = 0; i < n; ++i)
-            matrix.add(o.dofs[i], n, o.dofs.data(), &k(i, 0), false, false);
+          add(o.dofs, k);
         }
     }
 

@@ -19,8 +19,8 @@ namespace ndda
       const unsigned int max_iterations =
         contacts != nullptr ? settings.max_iterations : 1;
       const LinearSystem::SpringAssembler springs =
-        [contacts](SparseMatrix<double> &matrix, Vector<double> &b) {
-          contacts->assemble(matrix, b);
+        [contacts](const LinearSystem::BlockAdder &add, Vector<double> &b) {
+          contacts->assemble(add, b);
         };
       for (unsigned int iteration = 0; iteration < max_iterations; ++iteration)
         {

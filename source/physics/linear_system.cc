@@ -23,6 +23,7 @@ namespace ndda
         return std::nullopt;
       return std::optional<TimerOutput::Scope>(std::in_place, *timer, section);
     }
+
   } // namespace
 
 
@@ -41,8 +42,10 @@ namespace ndda
   void
   LinearSystem::reinit(DynamicSparsityPattern &element_couplings,
                        const Constraints      &constraints,
-                       const bool              with_contacts)
+                       const bool              with_contacts,
+                       const bool              compact)
   {
+    this->compact = compact;
     if (with_contacts)
       element_sparsity.copy_from(element_couplings);
     reinit_matrices(element_couplings, constraints);
@@ -61,7 +64,103 @@ namespace ndda
     mass_matrix.reinit(sparsity_pattern);
     damping_matrix.reinit(sparsity_pattern);
     system_matrix.reinit(sparsity_pattern);
+    condensed_base.reinit(sparsity_pattern);
     condensed_matrix.reinit(sparsity_pattern);
+    if (!compact)
+      return;
+    // The pattern of the unconstrained dofs among themselves.
+    const auto &affine = constraints.affine_constraints();
+    free_dofs.clear();
+    compact_index.assign(dsp.n_rows(), numbers::invalid_dof_index);
+    for (types::global_dof_index i = 0; i < dsp.n_rows(); ++i)
+      if (!affine.is_constrained(i))
+        {
+          compact_index[i] = free_dofs.size();
+          free_dofs.push_back(i);
+        }
+    DynamicSparsityPattern               compact_dsp(free_dofs.size());
+    std::vector<types::global_dof_index> row;
+    for (unsigned int r = 0; r < free_dofs.size(); ++r)
+      {
+        row.clear();
+        for (auto entry = sparsity_pattern.begin(free_dofs[r]);
+             entry != sparsity_pattern.end(free_dofs[r]);
+             ++entry)
+          if (compact_index[entry->column()] != numbers::invalid_dof_index)
+            row.push_back(compact_index[entry->column()]);
+        std::sort(row.begin(), row.end());
+        compact_dsp.add_entries(r, row.begin(), row.end(), true);
+      }
+    compact_pattern.copy_from(compact_dsp);
+    compact_matrix.reinit(compact_pattern);
+  }
+
+
+
+  const SparseMatrix<double> &
+  LinearSystem::solver_matrix()
+  {
+    if (!compact)
+      return condensed_matrix;
+    for (unsigned int r = 0; r < free_dofs.size(); ++r)
+      {
+        auto                        target    = compact_matrix.begin(r);
+        const SparseMatrix<double> &condensed = condensed_matrix;
+        for (auto entry = condensed.begin(free_dofs[r]);
+             entry != condensed.end(free_dofs[r]);
+             ++entry)
+          {
+            const auto c = compact_index[entry->column()];
+            if (c == numbers::invalid_dof_index)
+              continue;
+            // Both rows list their columns in the same order, the
+            // diagonal first.
+            while (target->column() != c)
+              ++target;
+            target->value() = entry->value();
+          }
+      }
+    return compact_matrix;
+  }
+
+
+
+  unsigned int
+  LinearSystem::compact_solve(const Vector<double> &b,
+                              Vector<double>       &d,
+                              const bool            factorize,
+                              const unsigned int    gmres_iterations)
+  {
+    const auto run = [&](const Vector<double> &rhs, Vector<double> &x) {
+      if (factorize)
+        {
+          {
+            const auto section = scope(timer, "factorize");
+            linear_solver->factorize(solver_matrix());
+          }
+          return linear_solver->solve(x, rhs);
+        }
+      if (gmres_iterations > 0)
+        return linear_solver->solve_with_earlier_factorization(
+          solver_matrix(), x, rhs, gmres_iterations, 1e-12);
+      return linear_solver->solve(x, rhs);
+    };
+    if (!compact)
+      return run(b, d);
+    if (free_dofs.empty())
+      {
+        // Every dof is constrained (reduced blocks fully prescribed).
+        d.reinit(b.size());
+        return 1;
+      }
+    Vector<double> bc(free_dofs.size()), dc(free_dofs.size());
+    for (unsigned int r = 0; r < free_dofs.size(); ++r)
+      bc[r] = b[free_dofs[r]];
+    const unsigned int iterations = run(bc, dc);
+    d.reinit(b.size());
+    for (unsigned int r = 0; r < free_dofs.size(); ++r)
+      d[free_dofs[r]] = dc[r];
+    return iterations;
   }
 
 
@@ -167,6 +266,10 @@ namespace ndda
       system_matrix.add(damping_coefficient, damping_matrix);
     if (!constraints.exact())
       constraints.add_penalty_springs(penalty_stiffness, system_matrix);
+    // Condensed once: the contact springs of the steps are added to a copy
+    // through the lines (solve()).
+    condensed_base.copy_from(system_matrix);
+    constraints.affine_constraints().condense(condensed_base);
     assembled_dt     = dt;
     matrices_changed = false;
     base_factorized  = false;
@@ -183,70 +286,87 @@ namespace ndda
                       Vector<double>        &d)
   {
     const bool springs = static_cast<bool>(add_springs);
-    // The condensed matrix is the system matrix with the springs, unless
-    // the factorization of the system matrix without springs serves.
-    const bool changed  = springs || !base_factorized;
-    const bool in_frame = frames != nullptr && frames->turned();
-    if (springs)
-      {
-        const auto section = scope(timer, "contact assembly");
-        condensed_matrix.copy_from(system_matrix);
-        add_springs(condensed_matrix, b);
-      }
-    else if (!base_factorized)
-      condensed_matrix.copy_from(system_matrix);
+    // The condensed matrix is the condensed system matrix with the
+    // springs, unless the factorization of the one without springs serves.
+    const bool  changed  = springs || !base_factorized;
+    const bool  in_frame = frames != nullptr && frames->turned();
+    const auto &affine   = constraints.affine_constraints();
+    // The prescribed increments g (exact constraints) in the frames, and
+    // A g with the springs S g, to take from b.
     Vector<double> prescribed_in_frame;
     if (in_frame)
       {
-        frames->to_frame(b);
         prescribed_in_frame = prescribed;
         frames->to_frame(prescribed_in_frame);
       }
     const Vector<double> &g = in_frame ? prescribed_in_frame : prescribed;
-
-    const auto  section = scope(timer, "solve");
-    const auto &affine  = constraints.affine_constraints();
-    if (constraints.exact())
+    const bool            with_g =
+      constraints.exact() && !constraints.constrained_nodes().empty();
+    Vector<double> ag;
+    if (with_g)
       {
-        // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies
-        // the homogeneous constraints.
-        if (!constraints.constrained_nodes().empty())
-          {
-            Vector<double> tmp(b.size());
-            (changed ? condensed_matrix : system_matrix).vmult(tmp, g);
-            b -= tmp;
-          }
+        ag.reinit(b.size());
+        system_matrix.vmult(ag, g);
       }
-    // The lines of the exact constraints, and of the reduced blocks (with
-    // either method).
+    if (springs)
+      {
+        const auto section = scope(timer, "contact assembly");
+        condensed_matrix.copy_from(condensed_base);
+        add_springs(
+          [&](const std::vector<types::global_dof_index> &dofs,
+              const FullMatrix<double>                   &k) {
+            // Through the lines where a dof has one (deal.II's sorting
+            // costs more than the add), else added row by row.
+            // Through the lines where a dof has one (deal.II's sorting
+            // costs more than the add), else added row by row.
+            if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
+                  return affine.is_constrained(i);
+                }))
+              affine.distribute_local_to_global(k, dofs, condensed_matrix);
+            else
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                condensed_matrix.add(
+                  dofs[i], dofs.size(), dofs.data(), &k(i, 0), false, false);
+            if (with_g)
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                for (unsigned int j = 0; j < dofs.size(); ++j)
+                  ag[dofs[i]] += k(i, j) * g[dofs[j]];
+          },
+          b);
+      }
+    else if (!base_factorized)
+      condensed_matrix.copy_from(condensed_base);
+    if (in_frame)
+      frames->to_frame(b);
+
+    const auto section = scope(timer, "solve");
+    // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies the
+    // homogeneous lines (of the exact constraints, and of the reduced
+    // blocks with either method).
+    if (with_g)
+      b -= ag;
     affine.condense(b);
     unsigned int iterations = 0;
     if (changed)
       {
-        affine.condense(condensed_matrix);
         // Only contact springs or the contact geometry differ from the
         // last factorized system: try its factorization as GMRES
         // preconditioner first, factorize if it does not serve.
         iterations       = reuse_iterations > 0 && !refactorize_next ?
-                             linear_solver->solve_with_earlier_factorization(
-                         condensed_matrix, d, b, reuse_iterations, 1e-12) :
+                             compact_solve(b, d, false, reuse_iterations) :
                              0;
         refactorize_next = false;
         if (iterations == 0)
           {
-            {
-              const auto factorize = scope(timer, "factorize");
-              linear_solver->factorize(condensed_matrix);
-            }
             base_factorized = !springs;
-            iterations      = linear_solver->solve(d, b);
+            iterations      = compact_solve(b, d, true, 0);
           }
         else if (2 * iterations > reuse_iterations)
           // Converging slowly: the factorization has aged.
           refactorize_next = true;
       }
     else
-      iterations = linear_solver->solve(d, b);
+      iterations = compact_solve(b, d, false, 0);
     affine.distribute(d);
     if (constraints.exact())
       d += g;

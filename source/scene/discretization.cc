@@ -133,7 +133,14 @@ namespace ndda
                                       constraints.affine_constraints(),
                                       true);
       bolts.add_couplings(dsp);
-      linear_system.reinit(dsp, constraints, parameters.contact.enabled);
+      // Rigid and affine blocks constrain most of their dofs: the solver
+      // gets the system of the free dofs alone (direct solvers).
+      linear_system.reinit(dsp,
+                           constraints,
+                           parameters.contact.enabled,
+                           !reduced_blocks.empty() &&
+                             parameters.control.linear_solver !=
+                               parameters::LinearSolverType::cg_amg);
     }
 
 

@@ -22,6 +22,7 @@ namespace ndda
 }
 
 #include <array>
+#include <functional>
 #include <map>
 #include <set>
 #include <tuple>
@@ -172,13 +173,16 @@ namespace ndda
       }
 
       /**
-       * Add the springs of the present states to @p matrix, in the
-       * blocks' frames (Q^T S Q, see set_frames()), and their forces at
-       * d = 0 to @p rhs, in global components.
+       * Add the springs of the present states through @p add, one dense
+       * block per contact, in the blocks' frames (Q^T S Q, see
+       * set_frames()), and their forces at d = 0 to @p rhs, in global
+       * components.
        */
       void
-      assemble(dealii::SparseMatrix<double> &matrix,
-               dealii::Vector<double>       &rhs) const;
+      assemble(const std::function<
+                 void(const std::vector<dealii::types::global_dof_index> &,
+                      const dealii::FullMatrix<double> &)> &add,
+               dealii::Vector<double>                      &rhs) const;
 
       /**
        * For the Newmark integrator, which averages the forces at the

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -43,10 +44,16 @@ namespace ndda
   class LinearSystem
   {
   public:
-    /** Adds springs (the contacts') to a matrix (in the blocks' frames,
-     * see solve()) and their forces to a right-hand side. */
+    /** Adds a dense block of springs on the dofs of its first argument
+     * to the system (in the blocks' frames, see solve()). */
+    using BlockAdder =
+      std::function<void(const std::vector<types::global_dof_index> &,
+                         const FullMatrix<double> &)>;
+
+    /** Adds springs (the contacts') as dense blocks through a BlockAdder
+     * and their forces to a right-hand side (global components). */
     using SpringAssembler =
-      std::function<void(SparseMatrix<double> &, Vector<double> &)>;
+      std::function<void(const BlockAdder &, Vector<double> &)>;
 
     /**
      * A new linear solver of type @p type; with @p timer, the assembly and
@@ -69,11 +76,16 @@ namespace ndda
      * constraints; every matrix is set to zero on it. With
      * @p with_contacts the element couplings are kept, to add the
      * contacts' to them later.
+     * With @p compact (a direct solver only), the solver gets the system
+     * of the unconstrained dofs alone, without the rows of the
+     * constrained ones: for scenes whose rigid and affine blocks
+     * constrain most dofs (ReducedBlocks).
      */
     void
     reinit(DynamicSparsityPattern &element_couplings,
            const Constraints      &constraints,
-           const bool              with_contacts);
+           const bool              with_contacts,
+           const bool              compact = false);
 
     /**
      * Make sure the pattern holds every (vertex, cell) contact coupling
@@ -215,8 +227,35 @@ namespace ndda
     SparseMatrix<double>                               mass_matrix;
     SparseMatrix<double>                               damping_matrix;
     SparseMatrix<double>                               system_matrix;
-    /// The condensed system matrix with the contact springs of the solve.
-    SparseMatrix<double>          condensed_matrix;
+    /// The system matrix condensed with the constraints' lines, once per
+    /// prepare_step() that changes it.
+    SparseMatrix<double> condensed_base;
+    /// The condensed system matrix with the contact springs of the solve
+    /// (added through the lines, block by block).
+    SparseMatrix<double> condensed_matrix;
+    /// The compact system: the unconstrained dofs (in order), the index
+    /// of every dof among them (invalid: constrained), and the condensed
+    /// matrix on them, which the solver then gets.
+    bool                                 compact = false;
+    std::vector<types::global_dof_index> free_dofs;
+    std::vector<types::global_dof_index> compact_index;
+    SparsityPattern                      compact_pattern;
+    SparseMatrix<double>                 compact_matrix;
+
+    /** The solver's matrix: the condensed matrix, or its compact copy. */
+    const SparseMatrix<double> &
+    solver_matrix();
+
+    /** Solve the condensed system for @p b (condensed) into @p d, through
+     * the compact system if there is one: returns the solver's
+     * iterations (@p factorize: a new factorization first; else GMRES
+     * with the last one, at most @p gmres_iterations, 0 if it does not
+     * converge; 0 iterations: the plain solve). */
+    unsigned int
+                                  compact_solve(const Vector<double> &b,
+                                                Vector<double>       &d,
+                                                const bool            factorize,
+                                                const unsigned int    gmres_iterations);
     const BlockFrames            *frames = nullptr;
     std::unique_ptr<LinearSolver> linear_solver;
     bool                          damped           = false;

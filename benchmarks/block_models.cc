@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Cost of a time step against the number of blocks, per block kinematics
+// model (issue 15): staggered dry-stone walls of 1 m x 0.5 m bricks as in
+// prm/brick_wall.prm (half bricks at the ends of every second course, a
+// fixed base, gravity, DDA, dt = 2 ms, penalty 10 E, friction 35 degrees,
+// KLU), with `Control/Kinematics` = meshed, affine and rigid. Walls of
+// about 100, 1000 and 10,000 bricks (courses x bricks per course: 12 x 8,
+// 25 x 40, 100 x 100). For each run: blocks, DoFs, the mean and median
+// wall time per step over steps 11 to N, that time per brick, open-close
+// iterations and factorizations per step.
+//
+// Usage: block_models [steps] [largest wall: 1, 2 or 3]   (default 50, 2)
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <ndda/parameters/parameters.h>
+#include <ndda/simulator.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  /** The wall scene of @p courses courses of @p length bricks. */
+  std::string
+  wall(const unsigned int courses,
+       const unsigned int length,
+       const std::string &model)
+  {
+    const double       w = length, h = 0.5 * courses;
+    std::ostringstream joints;
+    joints << std::setprecision(10);
+    std::string separator;
+    for (unsigned int c = 1; c < courses; ++c)
+      {
+        joints << separator << 0 << ", " << 0.5 * c << ", " << w << ", "
+               << 0.5 * c;
+        separator = "; ";
+      }
+    for (unsigned int c = 0; c < courses; ++c)
+      for (unsigned int i = 1; i <= length; ++i)
+        {
+          const double x = i - (c % 2 == 1 ? 0.5 : 0.);
+          if (x <= 0 || x >= w)
+            continue;
+          joints << separator << x << ", " << 0.5 * c << ", " << x << ", "
+                 << 0.5 * (c + 1);
+        }
+    std::ostringstream text;
+    text << std::setprecision(10) << R"(
+set Scene name = wall
+subsection Control
+  set Analysis type   = dynamic
+  set Time integrator = DDA
+  set Time step       = 2e-3
+  set End time        = 10
+  set Maximum displacement ratio = 0.01
+  set Linear solver = KLU
+  set Kinematics = )"
+         << model << R"(
+end
+subsection Contact
+  set Penalty factor = 10
+end
+subsection Materials
+  set Names = rock
+  subsection rock
+    set Density         = 2600
+    set Young's modulus = 10e9
+    set Poisson's ratio = 0.25
+  end
+  subsection Joint
+    set Friction angle = 35
+  end
+end
+subsection Geometry
+  set Blocks  = base
+  set Regions = wall
+  subsection base
+    set Outer boundary = -1, -1; )"
+         << w + 1 << ", -1; " << w + 1 << ", 0; -1, 0" << R"(
+    set Material = rock
+    set Mesh size = 2
+  end
+  subsection wall
+    set Outer boundary = 0, 0; )"
+         << w << ", 0; " << w << ", " << h << "; 0, " << h << R"(
+    set Joints = )"
+         << joints.str() << R"(
+    set Material = rock
+    set Mesh size = 2
+  end
+end
+subsection Loads
+  set Gravity = 0; -9.81
+end
+subsection Boundary conditions
+  set Names = ground
+  subsection ground
+    set Type     = fixed
+    set Segments = -1, -1, )"
+         << w + 1 << R"(, -1
+  end
+end
+subsection Output
+  set Write vtu = false
+end
+)";
+    return text.str();
+  }
+
+  void
+  run(const unsigned int courses,
+      const unsigned int length,
+      const std::string &model,
+      const unsigned int steps)
+  {
+    dealii::ParameterHandler     prm;
+    ndda::parameters::Parameters parameters;
+    parameters.read(wall(courses, length, model), "wall.prm", prm);
+    ndda::Simulator<2> simulator(parameters);
+    simulator.setup();
+    const unsigned int  skip = 10;
+    std::vector<double> times;
+    unsigned int        iterations = 0, factorizations = 0;
+    for (unsigned int s = 0; s < steps + skip; ++s)
+      {
+        if (s == skip)
+          factorizations = simulator.n_factorizations();
+        const auto start = std::chrono::steady_clock::now();
+        simulator.do_time_step();
+        if (s < skip)
+          continue;
+        times.push_back(std::chrono::duration<double>(
+                          std::chrono::steady_clock::now() - start)
+                          .count());
+        iterations += simulator.get_contacts().get_statistics().n_iterations;
+      }
+    double total = 0;
+    for (const double t : times)
+      total += t;
+    std::vector<double> sorted(times);
+    std::sort(sorted.begin(), sorted.end());
+    const unsigned int bricks = simulator.get_mesh().n_blocks() - 1;
+    const double       mean   = 1e3 * total / times.size();
+    std::cout << std::setw(8) << model << std::setw(8) << bricks
+              << std::setw(9) << simulator.get_dof_handler().n_dofs()
+              << std::fixed << std::setprecision(3) << std::setw(11) << mean
+              << std::setw(11) << 1e3 * sorted[sorted.size() / 2]
+              << std::setw(12) << 1e3 * mean / bricks << std::setprecision(2)
+              << std::setw(8) << double(iterations) / times.size()
+              << std::setw(8)
+              << double(simulator.n_factorizations() - factorizations) /
+                   times.size()
+              << std::defaultfloat << std::endl;
+    std::cout << "@value block_models." << model << "." << bricks << ".ms "
+              << std::setprecision(3) << mean << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int steps   = argc > 1 ? std::atoi(argv[1]) : 50;
+  const unsigned int largest = argc > 2 ? std::atoi(argv[2]) : 2;
+  std::cout << "steps 11 to " << steps + 10 << " of each run" << std::endl;
+  std::cout << std::setw(8) << "model" << std::setw(8) << "bricks"
+            << std::setw(9) << "DoFs" << std::setw(11) << "ms/step"
+            << std::setw(11) << "median" << std::setw(12) << "us/brick"
+            << std::setw(8) << "o-c it" << std::setw(8) << "fact."
+            << std::endl;
+  const unsigned int sizes[3][2] = {{12, 8}, {25, 40}, {100, 100}};
+  for (unsigned int s = 0; s < largest && s < 3; ++s)
+    for (const std::string model : {"meshed", "affine", "rigid"})
+      run(sizes[s][0], sizes[s][1], model, steps);
+}
