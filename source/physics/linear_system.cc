@@ -317,8 +317,6 @@ namespace ndda
               const FullMatrix<double>                   &k) {
             // Through the lines where a dof has one (deal.II's sorting
             // costs more than the add), else added row by row.
-            // Through the lines where a dof has one (deal.II's sorting
-            // costs more than the add), else added row by row.
             if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
                   return affine.is_constrained(i);
                 }))
@@ -346,32 +344,40 @@ namespace ndda
     if (with_g)
       b -= ag;
     affine.condense(b);
-    unsigned int iterations = 0;
-    if (changed)
-      {
-        // Only contact springs or the contact geometry differ from the
-        // last factorized system: try its factorization as GMRES
-        // preconditioner first, factorize if it does not serve.
-        iterations       = reuse_iterations > 0 && !refactorize_next ?
-                             compact_solve(b, d, false, reuse_iterations) :
-                             0;
-        refactorize_next = false;
-        if (iterations == 0)
-          {
-            base_factorized = !springs;
-            iterations      = compact_solve(b, d, true, 0);
-          }
-        else if (2 * iterations > reuse_iterations)
-          // Converging slowly: the factorization has aged.
-          refactorize_next = true;
-      }
-    else
-      iterations = compact_solve(b, d, false, 0);
+    const unsigned int iterations =
+      changed ? solve_changed(b, d, springs, reuse_iterations) :
+                compact_solve(b, d, false, 0);
     affine.distribute(d);
     if (constraints.exact())
       d += g;
     if (in_frame)
       frames->to_global(d);
+    return iterations;
+  }
+
+
+
+  unsigned int
+  LinearSystem::solve_changed(const Vector<double> &b,
+                              Vector<double>       &d,
+                              const bool            springs,
+                              const unsigned int    reuse_iterations)
+  {
+    // Only contact springs or the contact geometry differ from the last
+    // factorized system: try its factorization as GMRES preconditioner
+    // first, factorize if it does not serve.
+    unsigned int iterations = reuse_iterations > 0 && !refactorize_next ?
+                                compact_solve(b, d, false, reuse_iterations) :
+                                0;
+    refactorize_next        = false;
+    if (iterations == 0)
+      {
+        base_factorized = !springs;
+        iterations      = compact_solve(b, d, true, 0);
+      }
+    else if (2 * iterations > reuse_iterations)
+      // Converging slowly: the factorization has aged.
+      refactorize_next = true;
     return iterations;
   }
 

@@ -242,6 +242,15 @@ namespace ndda
     SparsityPattern                      compact_pattern;
     SparseMatrix<double>                 compact_matrix;
 
+    /** Solve the changed condensed system for @p b into @p d: GMRES with
+     * the last factorization, or a new factorization (of a system with
+     * @p springs or without). Returns the iterations. */
+    unsigned int
+    solve_changed(const Vector<double> &b,
+                  Vector<double>       &d,
+                  const bool            springs,
+                  const unsigned int    reuse_iterations);
+
     /** The solver's matrix: the condensed matrix, or its compact copy. */
     const SparseMatrix<double> &
     solver_matrix();
