@@ -86,7 +86,8 @@ subsection Geometry
   set Regions = wall
   subsection base
     set Outer boundary = -1, -1; )"
-         << w + 1 << ", -1; " << w + 1 << ", 0; -1, 0" << R"(
+         << w + 1 << ", -1; " << w + 1 << ", 0; -1, 0"
+         << R"(
     set Material = rock
     set Mesh size = 2
   end
@@ -151,13 +152,12 @@ end
     std::sort(sorted.begin(), sorted.end());
     const unsigned int bricks = simulator.get_mesh().n_blocks() - 1;
     const double       mean   = 1e3 * total / times.size();
-    std::cout << std::setw(8) << model << std::setw(8) << bricks
-              << std::setw(9) << simulator.get_dof_handler().n_dofs()
-              << std::fixed << std::setprecision(3) << std::setw(11) << mean
-              << std::setw(11) << 1e3 * sorted[sorted.size() / 2]
-              << std::setw(12) << 1e3 * mean / bricks << std::setprecision(2)
-              << std::setw(8) << double(iterations) / times.size()
-              << std::setw(8)
+    std::cout << std::setw(8) << model << std::setw(8) << bricks << std::setw(9)
+              << simulator.get_dof_handler().n_dofs() << std::fixed
+              << std::setprecision(3) << std::setw(11) << mean << std::setw(11)
+              << 1e3 * sorted[sorted.size() / 2] << std::setw(12)
+              << 1e3 * mean / bricks << std::setprecision(2) << std::setw(8)
+              << double(iterations) / times.size() << std::setw(8)
               << double(simulator.n_factorizations() - factorizations) /
                    times.size()
               << std::defaultfloat << std::endl;
@@ -176,8 +176,7 @@ main(int argc, char **argv)
   std::cout << std::setw(8) << "model" << std::setw(8) << "bricks"
             << std::setw(9) << "DoFs" << std::setw(11) << "ms/step"
             << std::setw(11) << "median" << std::setw(12) << "us/brick"
-            << std::setw(8) << "o-c it" << std::setw(8) << "fact."
-            << std::endl;
+            << std::setw(8) << "o-c it" << std::setw(8) << "fact." << std::endl;
   const unsigned int sizes[3][2] = {{12, 8}, {25, 40}, {100, 100}};
   for (unsigned int s = 0; s < largest && s < 3; ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
