@@ -81,6 +81,8 @@ namespace ndda
                              stresses,
                              kinematics.velocity);
     compute_internal_force();
+    setup_automatic_kinematics();
+    promote_blocks(nullptr);
 
     step_controller = time::StepController(scene::step_limits(parameters));
     open_close =
@@ -337,8 +339,10 @@ namespace ndda
     const std::vector<double>     bolt_forces = fem.bolts.axial_forces();
     const contact::ContactHandler old_contacts(contacts);
 
-    mesh.crack(edges);
+    const CrackResult cracked = mesh.crack(edges);
     n_cracked_edges += edges.size();
+    for (const auto &edge : cracked.cracked_edges)
+      automatic.mark_cracked({edge.cells[0], edge.cells[1]});
 
     setup_dofs(false);
     const auto transfer = [&](const Vector<double> &old, Vector<double> &now) {
@@ -375,6 +379,7 @@ namespace ndda
     // recomputed only for cells that moved beyond the tolerance since
     // their last computation, as in any step. Then global matrices,
     // gravity, internal force, loaded faces, and M a on the new mesh.
+    setup_automatic_kinematics();
     fem.update_matrices(parameters, true, displacement, stresses, true);
     ++n_matrix_rebuilds;
     compute_internal_force();
@@ -488,6 +493,14 @@ namespace ndda
     for (;;)
       {
         dt = solve_step(d);
+        // Kinematics = auto: a block that the step brings near failure is
+        // meshed, and the step solved again.
+        if (promote_blocks(&d))
+          {
+            if (parameters.contact.enabled)
+              contacts.set_normal_stiffness(start_stiffness);
+            continue;
+          }
         if (fracture_check.get_edges().empty())
           break;
         const auto failing = check_fracture(d, dt);
@@ -504,6 +517,7 @@ namespace ndda
         ++crack_events;
       }
     commit_step(d, dt);
+    demote_blocks();
     step_controller.accept(dt);
     n_crack_events += crack_events;
     ++step_number;

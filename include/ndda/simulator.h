@@ -26,6 +26,7 @@
 #include <ndda/contact/contact_handler.h>
 #include <ndda/contact/open_close_solver.h>
 #include <ndda/fracture/edge_failure_check.h>
+#include <ndda/kinematics/automatic_kinematics.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/bolts.h>
@@ -46,6 +47,7 @@
 
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -312,6 +314,21 @@ namespace ndda
       return step_report;
     }
 
+    /** The automatic block kinematics (Kinematics = auto): its blocks,
+     * promotions and demotions. */
+    const ndda::kinematics::AutomaticKinematics &
+    get_automatic_kinematics() const
+    {
+      return automatic;
+    }
+
+    /** The discretization: element, dofs, block models, constraints. */
+    const scene::Discretization &
+    get_discretization() const
+    {
+      return fem;
+    }
+
     /** Wall time spent in the last call to do_time_step() (s). */
     double
     last_step_wall_time() const
@@ -382,6 +399,30 @@ namespace ndda
      */
     void
     commit_step(const Vector<double> &d, const double dt);
+    /**
+     * Kinematics = auto: the blocks of the mesh, the fracture strengths of
+     * the cells, which blocks hold a crack (setup and after a crack).
+     * These members are in source/simulator_kinematics.cc.
+     */
+    void
+    setup_automatic_kinematics();
+    /**
+     * Kinematics = auto: promote the reduced auto blocks that are near
+     * failure at the trial end of the step with increment @p d (or, with
+     * nullptr, at the start of the run: those that start meshed, not
+     * counted). Returns whether any was promoted: the step is then solved
+     * again.
+     */
+    bool
+    promote_blocks(const Vector<double> *d);
+    /** Kinematics = auto, after a step: demote the blocks that have been
+     * unloaded long enough. */
+    void
+    demote_blocks();
+    /** The system, the fracture check and (not @p at_start) the global
+     * matrices for the present block models. */
+    void
+    set_up_block_models(const bool at_start);
     /** The step report and the statistics row of the step just done. */
     void
     record_statistics(const double dt);
@@ -442,6 +483,9 @@ namespace ndda
     /// it turned: set the system up again before the next step.
     bool block_lines_stale    = false;
     bool parameters_from_file = false;
+
+    /// Kinematics = auto: which blocks are promoted and demoted.
+    ndda::kinematics::AutomaticKinematics automatic;
 
     fracture::EdgeFailureCheck fracture_check;
     unsigned int               n_crack_events  = 0;

@@ -404,11 +404,53 @@ namespace ndda
         u[k] = d[dofs->vertex_dofs[c.vertex_a][k]] -
                d[dofs->vertex_dofs[c.vertex_b][k]];
       statistics.spring_energy += 0.5 * kn * u.norm_square();
-      for (unsigned int k = 0; k < 2; ++k)
+      add_end_force(c, d, end_force);
+    }
+
+
+
+    void
+    ContactHandler::add_end_force(const ContactPair            &c,
+                                  const dealii::Vector<double> &d,
+                                  dealii::Vector<double>       &force) const
+    {
+      if (c.state == State::vertex_spring)
         {
-          end_force[dofs->vertex_dofs[c.vertex_a][k]] -= kn * u[k];
-          end_force[dofs->vertex_dofs[c.vertex_b][k]] += kn * u[k];
+          const double kn = settings.normal_stiffness;
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              const double u = d[dofs->vertex_dofs[c.vertex_a][k]] -
+                               d[dofs->vertex_dofs[c.vertex_b][k]];
+              force[dofs->vertex_dofs[c.vertex_a][k]] -= kn * u;
+              force[dofs->vertex_dofs[c.vertex_b][k]] += kn * u;
+            }
+          return;
         }
+      if (c.state == State::open || c.chosen == invalid)
+        return;
+      // The springs' forces at d = 0 on the geometry of the step's end
+      // (the gap and, for a locked contact, the shear displacement of the
+      // solution).
+      const Option &o = c.options[c.chosen];
+      const Trial   trial(o, d);
+      Option        at_end      = o;
+      at_end.gap                = trial.gap;
+      ContactState state_at_end = c;
+      if (c.state == State::locked)
+        state_at_end.anchor -= trial.increment / o.length;
+      settings.law->add_springs(
+        at_end, state_at_end, c.scale, settings, nullptr, force);
+    }
+
+
+
+    void
+    ContactHandler::trial_end_forces(const dealii::Vector<double> &d,
+                                     dealii::Vector<double>       &force) const
+    {
+      force.reinit(d.size());
+      for (const ContactPair &c : contacts)
+        add_end_force(c, d, force);
     }
 
 
@@ -421,18 +463,7 @@ namespace ndda
       const Option &o = c.options[c.chosen];
       const Trial   trial(o, d);
       statistics.spring_energy += settings.law->energy(o, c, trial, settings);
-      // The force at the step's end: the springs' forces at d = 0 on the
-      // geometry of the step's end (the gap and, for a locked contact,
-      // the shear displacement of the solution).
-      {
-        Option at_end             = o;
-        at_end.gap                = trial.gap;
-        ContactState state_at_end = c;
-        if (c.state == State::locked)
-          state_at_end.anchor -= trial.increment / o.length;
-        settings.law->add_springs(
-          at_end, state_at_end, c.scale, settings, nullptr, end_force);
-      }
+      add_end_force(c, d, end_force);
       double anchor = c.anchor;
       if (c.state != State::locked)
         {

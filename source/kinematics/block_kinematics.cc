@@ -3,6 +3,7 @@
 // The block kinematics registry and the built-in models: meshed, affine
 // (Shi's DDA block) and rigid.
 
+#include <ndda/kinematics/automatic_kinematics.h>
 #include <ndda/kinematics/block_kinematics.h>
 
 namespace ndda
@@ -30,11 +31,12 @@ namespace ndda
     check_name(const std::string &name, const std::string &entry)
     {
       const auto &known = BlockKinematicsRegistry::registered();
-      AssertThrow(known.count(name) == 1,
+      AssertThrow(known.count(name) == 1 || name == automatic_name,
                   dealii::ExcMessage(
                     entry + ": '" + name +
                     "' is not a block kinematics model. Known models: " +
-                    BlockKinematicsRegistry::joined_names(", ") + "."));
+                    BlockKinematicsRegistry::joined_names(", ") + ", and " +
+                    automatic_name + "."));
     }
 
 

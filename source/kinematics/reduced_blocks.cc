@@ -414,21 +414,31 @@ namespace ndda
 
     void
     ReducedBlocks::project(const SparseMatrix<double> &mass,
-                           Vector<double>             &velocity) const
+                           Vector<double>             &velocity,
+                           Vector<double>             *inertia_force,
+                           const std::vector<bool>    &mesh_blocks) const
     {
       for (unsigned int b = 0; b < blocks.size(); ++b)
         {
-          const Block       &block = blocks[b];
+          const Block &block = blocks[b];
+          if (!mesh_blocks.empty() && !mesh_blocks[block.mesh_block])
+            continue;
           const unsigned int n = block.nodes.size(), k = block.basis.n();
           // The velocity in the block's frame, M v and M B on its dofs
           // (the mass couples a block's dofs only with its own).
           const auto [c, s] = frames->node_rotation(block.nodes[0]);
-          Vector<double> v(2 * n), mv(2 * n);
+          Vector<double> v(2 * n), mv(2 * n), f(2 * n);
           for (unsigned int i = 0; i < n; ++i)
             {
               const auto &dofs = dof_map->node_dofs[block.nodes[i]];
               v[2 * i]         = c * velocity[dofs[0]] + s * velocity[dofs[1]];
               v[2 * i + 1]     = -s * velocity[dofs[0]] + c * velocity[dofs[1]];
+              if (inertia_force != nullptr)
+                {
+                  const Vector<double> &a = *inertia_force;
+                  f[2 * i]                = c * a[dofs[0]] + s * a[dofs[1]];
+                  f[2 * i + 1]            = -s * a[dofs[0]] + c * a[dofs[1]];
+                }
             }
           FullMatrix<double> mb(2 * n, k);
           for (unsigned int i = 0; i < n; ++i)
@@ -452,14 +462,26 @@ namespace ndda
           block.basis.Tmmult(btmb, mb);
           Vector<double> rhs(k), q(k), fit(2 * n);
           block.basis.Tvmult(rhs, mv);
-          pseudo_inverse(btmb).first.vmult(q, rhs);
+          const FullMatrix<double> inverse = pseudo_inverse(btmb).first;
+          inverse.vmult(q, rhs);
           block.basis.vmult(fit, q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const auto &dofs  = dof_map->node_dofs[block.nodes[i]];
-              velocity[dofs[0]] = c * fit[2 * i] - s * fit[2 * i + 1];
-              velocity[dofs[1]] = s * fit[2 * i] + c * fit[2 * i + 1];
-            }
+          const auto put = [&](const Vector<double> &local,
+                               Vector<double>       &global) {
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const auto &dofs = dof_map->node_dofs[block.nodes[i]];
+                global[dofs[0]]  = c * local[2 * i] - s * local[2 * i + 1];
+                global[dofs[1]]  = s * local[2 * i] + c * local[2 * i + 1];
+              }
+          };
+          put(fit, velocity);
+          if (inertia_force == nullptr)
+            continue;
+          // M a with a the fit of the acceleration: M B (B^T M B)^-1 B^T f.
+          block.basis.Tvmult(rhs, f);
+          inverse.vmult(q, rhs);
+          mb.vmult(fit, q);
+          put(fit, *inertia_force);
         }
     }
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ndda/contact/contact_law.h>
+#include <ndda/kinematics/automatic_kinematics.h>
 #include <ndda/kinematics/block_kinematics.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/constitutive_law.h>
@@ -216,13 +217,18 @@ namespace ndda
           "Kinematics",
           "meshed",
           Patterns::Selection(
-            kinematics::BlockKinematicsRegistry::joined_names()),
+            kinematics::BlockKinematicsRegistry::joined_names() + "|" +
+            kinematics::automatic_name),
           kinematics::BlockKinematicsRegistry::documentation(
             "How the blocks move, unless a block's or region's own "
             "Kinematics entry says otherwise (doc/design.md, \"Block "
             "kinematics\"). Every model keeps the block's nodes for "
             "contacts, loads, constraints, bolts and output, and turns "
-            "blocks exactly."));
+            "blocks exactly. 'auto': a block starts with the Start model "
+            "of subsection Automatic kinematics, is meshed when its "
+            "stresses come near its strength and returns when it is "
+            "unloaded (doc/theory.md, \"Automatic kinematics\")."));
+        kinematics::AutomaticSettings::declare_parameters(prm);
         prm.declare_entry(
           "Matrix update tolerance",
           "1e-3",
@@ -291,6 +297,7 @@ namespace ndda
                              "zero with 'Constraint method = penalty'."));
       matrix_update_tolerance = prm.get_double("Matrix update tolerance");
       kinematics              = prm.get("Kinematics");
+      automatic_kinematics.parse_parameters(prm);
 
       // The element: Finite element, or else FE_SimplexP(Element degree).
       const std::string by_degree =

@@ -34,6 +34,8 @@ namespace ndda
     link_plugin_ContactColumns();
     void
     link_plugin_WallTime();
+    void
+    link_plugin_KinematicsOutput();
 
     void
     Postprocessor::link_builtin_plugins()
@@ -48,6 +50,7 @@ namespace ndda
       link_plugin_FractureStatistics();
       link_plugin_ContactColumns();
       link_plugin_WallTime();
+      link_plugin_KinematicsOutput();
     }
 
 
@@ -94,7 +97,7 @@ namespace ndda
       /// the VTU fields and the statistics columns.
       const char *default_list =
         "displacement, velocity, stress, block and material, crack faces, "
-        "time step, energy, fracture, contact";
+        "kinematics, time step, energy, fracture, contact";
     } // namespace
 
 

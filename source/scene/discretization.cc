@@ -91,25 +91,82 @@ namespace ndda
     {
       models.clear();
       const auto states = initial_states(parameters, mesh);
+      // An auto block starts with the start model; the meshed model is
+      // there for its promotion.
+      const std::string &start =
+        parameters.control.automatic_kinematics.start_model;
       std::vector<const kinematics::BlockKinematics *> block_model;
+      std::vector<bool>                                block_auto;
       for (const auto &state : states)
         {
-          auto known =
-            std::find_if(models.begin(), models.end(), [&](const auto &m) {
-              return m.first == state.kinematics;
-            });
-          if (known == models.end())
-            {
-              models.emplace_back(state.kinematics,
-                                  kinematics::BlockKinematicsRegistry::create(
-                                    state.kinematics));
-              known = models.end() - 1;
-            }
-          block_model.push_back(known->second.get());
+          const bool automatic = state.kinematics == kinematics::automatic_name;
+          block_auto.push_back(automatic);
+          block_model.push_back(model(automatic ? start : state.kinematics));
+          if (automatic)
+            model("meshed");
         }
       cell_model.resize(mesh.get_triangulation().n_active_cells());
+      cell_auto.resize(cell_model.size());
       for (unsigned int c = 0; c < cell_model.size(); ++c)
-        cell_model[c] = block_model[mesh.block_of_cell(c)];
+        {
+          cell_model[c] = block_model[mesh.block_of_cell(c)];
+          cell_auto[c]  = block_auto[mesh.block_of_cell(c)];
+        }
+    }
+
+
+
+    const kinematics::BlockKinematics *
+    Discretization::model(const std::string &name)
+    {
+      auto known = std::find_if(models.begin(),
+                                models.end(),
+                                [&](const auto &m) { return m.first == name; });
+      if (known != models.end())
+        return known->second.get();
+      models.emplace_back(name,
+                          kinematics::BlockKinematicsRegistry::create(name));
+      return models.back().second.get();
+    }
+
+
+
+    void
+    Discretization::set_block_models(
+      const std::vector<unsigned int>   &blocks,
+      const kinematics::BlockKinematics *block_model)
+    {
+      std::vector<bool> selected(mesh.n_blocks(), false);
+      for (const unsigned int b : blocks)
+        selected[b] = true;
+      for (unsigned int c = 0; c < cell_model.size(); ++c)
+        if (selected[mesh.block_of_cell(c)])
+          cell_model[c] = block_model;
+    }
+
+
+
+    std::vector<unsigned int>
+    Discretization::blocks_per_model() const
+    {
+      std::vector<unsigned int> count;
+      for (const auto &[name, m] : models)
+        count.push_back(m->n_unknowns() == 0 ?
+                          mesh.n_blocks() - reduced_blocks.n_reduced() :
+                          reduced_blocks.n_blocks_of(m.get()));
+      return count;
+    }
+
+
+
+    std::vector<bool>
+    Discretization::meshed_blocks() const
+    {
+      std::vector<bool> meshed(mesh.n_blocks(), true);
+      for (unsigned int c = 0; c < cell_model.size(); ++c)
+        if (cell_model[c]->n_unknowns() > 0)
+          meshed[mesh.block_of_cell(c)] = false;
+      return meshed;
     }
 
 
@@ -218,18 +275,24 @@ namespace ndda
     {
       std::ostringstream out;
       out << "  blocks: " << mesh.n_blocks();
-      if (!reduced_blocks.empty())
+      if (!all_meshed())
         {
           // The blocks of each model, e.g. "(rigid 2, meshed 5)".
           std::string separator = " (";
-          for (const auto &[name, model] : models)
+          const auto  count     = blocks_per_model();
+          for (unsigned int m = 0; m < models.size(); ++m)
             {
-              out << separator << name << " "
-                  << (model->n_unknowns() == 0 ?
-                        mesh.n_blocks() - reduced_blocks.n_reduced() :
-                        reduced_blocks.n_blocks_of(model.get()));
+              out << separator << models[m].first << " " << count[m];
               separator = ", ";
             }
+          std::vector<bool> block_auto(mesh.n_blocks(), false);
+          for (unsigned int c = 0; c < cell_auto.size(); ++c)
+            block_auto[mesh.block_of_cell(c)] =
+              block_auto[mesh.block_of_cell(c)] || cell_auto[c];
+          const unsigned int n_auto =
+            std::count(block_auto.begin(), block_auto.end(), true);
+          if (n_auto > 0)
+            out << "; " << n_auto << " of them auto";
           out << ")";
         }
       out << ", cells: " << mesh.get_triangulation().n_active_cells()

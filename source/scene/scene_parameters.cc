@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <ndda/kinematics/automatic_kinematics.h>
 #include <ndda/kinematics/block_kinematics.h>
 #include <ndda/parameters/entries.h>
 #include <ndda/scene/scene_parameters.h>
@@ -34,7 +35,8 @@ namespace ndda
           "",
           Patterns::Anything(),
           "How the block moves, one of " +
-            kinematics::BlockKinematicsRegistry::joined_names(", ") +
+            kinematics::BlockKinematicsRegistry::joined_names(", ") + " or " +
+            kinematics::automatic_name +
             " (see Control/Kinematics). Empty: Control/Kinematics.");
       }
 

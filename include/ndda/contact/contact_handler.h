@@ -237,6 +237,25 @@ namespace ndda
         return statistics;
       }
 
+      /**
+       * The contact forces on the nodes at the end of the last step
+       * (global components; empty before the first step ends).
+       */
+      const dealii::Vector<double> &
+      end_forces() const
+      {
+        return end_force;
+      }
+
+      /**
+       * The contact forces on the nodes at the end of the step being
+       * solved, with the settled increment @p d (as end_step() will find
+       * them; nothing is committed).
+       */
+      void
+      trial_end_forces(const dealii::Vector<double> &d,
+                       dealii::Vector<double>       &force) const;
+
 
     private:
       /**
@@ -561,6 +580,16 @@ namespace ndda
        */
       void
       end_vertex_spring(const ContactPair &c, const dealii::Vector<double> &d);
+
+      /**
+       * Add the force of @p c at the end of the step with increment @p d
+       * (a temporary vertex spring's or a closed contact's; none for an
+       * open one) to @p force.
+       */
+      void
+      add_end_force(const ContactPair            &c,
+                    const dealii::Vector<double> &d,
+                    dealii::Vector<double>       &force) const;
 
       /**
        * end_step() for a closed contact: its memory, energy, force at the

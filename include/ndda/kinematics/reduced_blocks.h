@@ -106,11 +106,16 @@ namespace ndda
       /**
        * Replace @p velocity on every reduced block by its projection on
        * the block's space that keeps momentum and angular momentum (the
-       * mass-weighted least-squares fit, B (B^T M B)^-1 B^T M v).
+       * mass-weighted least-squares fit, B (B^T M B)^-1 B^T M v); with
+       * @p inertia_force, replace M a there by M B (B^T M B)^-1 B^T M a,
+       * the inertia force of the fitted acceleration. Only the blocks of
+       * the mesh blocks @p mesh_blocks selects, if not empty.
        */
       void
       project(const dealii::SparseMatrix<double> &mass,
-              dealii::Vector<double>             &velocity) const;
+              dealii::Vector<double>             &velocity,
+              dealii::Vector<double>             *inertia_force = nullptr,
+              const std::vector<bool>            &mesh_blocks   = {}) const;
 
       /**
        * Whether a block whose lines depend on its orientation in the

@@ -8,6 +8,7 @@
 #include <ndda/contact/contact_parameters.h>
 #include <ndda/fracture/fracture_criterion.h>
 #include <ndda/geometry/block_mesh.h>
+#include <ndda/kinematics/automatic_kinematics.h>
 #include <ndda/parameters/entries.h>
 #include <ndda/physics/physics_parameters.h>
 #include <ndda/postprocess/output_parameters.h>
@@ -68,6 +69,8 @@ namespace ndda
       double                                      matrix_update_tolerance;
       /// The scene's default block kinematics model (by name).
       std::string kinematics;
+      /// The settings of Kinematics = auto.
+      kinematics::AutomaticSettings automatic_kinematics;
 
       /// The scalar element by name, as make_element() takes it
       /// (physics/finite_element.h): Finite element, or else

@@ -81,6 +81,40 @@ namespace ndda
       setup_kinematics(const parameters::Parameters &parameters);
 
       /**
+       * The model called @p name, created on first use (it stays in
+       * models).
+       */
+      const kinematics::BlockKinematics *
+      model(const std::string &name);
+
+      /**
+       * Give every cell of the mesh blocks @p blocks the model
+       * @p block_model; setup_system() then sets the system up for it.
+       */
+      void
+      set_block_models(const std::vector<unsigned int>   &blocks,
+                       const kinematics::BlockKinematics *block_model);
+
+      /** The number of blocks of each model of models, in its order. */
+      std::vector<unsigned int>
+      blocks_per_model() const;
+
+      /** Whether every model in use is a meshed one (no block is reduced
+       * now or later). */
+      bool
+      all_meshed() const
+      {
+        for (const auto &m : models)
+          if (m.second->n_unknowns() > 0)
+            return false;
+        return true;
+      }
+
+      /** Whether each block is meshed now. */
+      std::vector<bool>
+      meshed_blocks() const;
+
+      /**
        * After setup_constraints(), on the present geometry: the blocks'
        * frames, the reduced blocks (rigid, affine) tied to their unknowns,
        * and the sparsity pattern of the linear system.
@@ -198,6 +232,8 @@ namespace ndda
         models;
       /// The model of every cell (of its block).
       std::vector<const kinematics::BlockKinematics *> cell_model;
+      /// Whether every cell's block has Kinematics = auto.
+      std::vector<bool> cell_auto;
       /// The blocks that move with fewer unknowns than their mesh has.
       kinematics::ReducedBlocks reduced_blocks;
 
