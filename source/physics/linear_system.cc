@@ -92,7 +92,85 @@ namespace ndda
         compact_dsp.add_entries(r, row.begin(), row.end(), true);
       }
     compact_pattern.copy_from(compact_dsp);
+    compact_base.reinit(compact_pattern);
     compact_matrix.reinit(compact_pattern);
+    setup_expansion(affine);
+  }
+
+
+
+  void
+  LinearSystem::setup_expansion(const AffineConstraints<double> &affine)
+  {
+    const auto n = compact_index.size();
+    expansion_start.assign(n + 1, 0);
+    expansion_column.clear();
+    expansion_weight.clear();
+    for (types::global_dof_index i = 0; i < n; ++i)
+      {
+        if (compact_index[i] != numbers::invalid_dof_index)
+          {
+            expansion_column.push_back(compact_index[i]);
+            expansion_weight.push_back(1.);
+          }
+        else if (const auto *line = affine.get_constraint_entries(i))
+          for (const auto &[master, weight] : *line)
+            {
+              // The lines are closed: their masters are free.
+              Assert(compact_index[master] != numbers::invalid_dof_index,
+                     ExcInternalError());
+              expansion_column.push_back(compact_index[master]);
+              expansion_weight.push_back(weight);
+            }
+        expansion_start[i + 1] = expansion_column.size();
+      }
+  }
+
+
+
+  void
+  LinearSystem::add_to_compact(const std::vector<types::global_dof_index> &dofs,
+                               const FullMatrix<double>                   &k)
+  {
+    // The compact unknowns the block touches (sorted) and T (n x m); the
+    // blocks are small (8 x 8 to 14 x 14): plain loops, no allocation.
+    const unsigned int n       = dofs.size();
+    auto              &columns = scratch.columns;
+    columns.clear();
+    for (const auto i : dofs)
+      for (auto e = expansion_start[i]; e < expansion_start[i + 1]; ++e)
+        columns.push_back(expansion_column[e]);
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    const unsigned int m = columns.size();
+    if (m == 0)
+      return;
+    auto &t = scratch.t;
+    t.assign(n * m, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      for (auto e = expansion_start[dofs[i]]; e < expansion_start[dofs[i] + 1];
+           ++e)
+        t[i * m + (std::lower_bound(
+                     columns.begin(), columns.end(), expansion_column[e]) -
+                   columns.begin())] += expansion_weight[e];
+    // k t (n x m), then t^T k t (m x m).
+    auto &kt = scratch.kt;
+    kt.assign(n * m, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int l = 0; l < n; ++l)
+        if (const double kil = k(i, l); kil != 0.)
+          for (unsigned int b = 0; b < m; ++b)
+            kt[i * m + b] += kil * t[l * m + b];
+    auto &tkt = scratch.tkt;
+    tkt.assign(m * m, 0.);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int a = 0; a < m; ++a)
+        if (const double tia = t[i * m + a]; tia != 0.)
+          for (unsigned int b = 0; b < m; ++b)
+            tkt[a * m + b] += tia * kt[i * m + b];
+    for (unsigned int a = 0; a < m; ++a)
+      compact_matrix.add(
+        columns[a], m, columns.data(), &tkt[a * m], false, true);
   }
 
 
@@ -100,27 +178,7 @@ namespace ndda
   const SparseMatrix<double> &
   LinearSystem::solver_matrix()
   {
-    if (!compact)
-      return condensed_matrix;
-    for (unsigned int r = 0; r < free_dofs.size(); ++r)
-      {
-        auto                        target    = compact_matrix.begin(r);
-        const SparseMatrix<double> &condensed = condensed_matrix;
-        for (auto entry = condensed.begin(free_dofs[r]);
-             entry != condensed.end(free_dofs[r]);
-             ++entry)
-          {
-            const auto c = compact_index[entry->column()];
-            if (c == numbers::invalid_dof_index)
-              continue;
-            // Both rows list their columns in the same order, the
-            // diagonal first.
-            while (target->column() != c)
-              ++target;
-            target->value() = entry->value();
-          }
-      }
-    return compact_matrix;
+    return compact ? compact_matrix : condensed_matrix;
   }
 
 
@@ -270,6 +328,25 @@ namespace ndda
     // through the lines (solve()).
     condensed_base.copy_from(system_matrix);
     constraints.affine_constraints().condense(condensed_base);
+    if (compact)
+      for (unsigned int r = 0; r < free_dofs.size(); ++r)
+        {
+          auto                        target    = compact_base.begin(r);
+          const SparseMatrix<double> &condensed = condensed_base;
+          for (auto entry = condensed.begin(free_dofs[r]);
+               entry != condensed.end(free_dofs[r]);
+               ++entry)
+            {
+              const auto c = compact_index[entry->column()];
+              if (c == numbers::invalid_dof_index)
+                continue;
+              // Both rows list their columns in the same order, the
+              // diagonal first.
+              while (target->column() != c)
+                ++target;
+              target->value() = entry->value();
+            }
+        }
     assembled_dt     = dt;
     matrices_changed = false;
     base_factorized  = false;
@@ -311,15 +388,21 @@ namespace ndda
     if (springs)
       {
         const auto section = scope(timer, "contact assembly");
-        condensed_matrix.copy_from(condensed_base);
+        if (compact)
+          compact_matrix.copy_from(compact_base);
+        else
+          condensed_matrix.copy_from(condensed_base);
         add_springs(
           [&](const std::vector<types::global_dof_index> &dofs,
               const FullMatrix<double>                   &k) {
             // Through the lines where a dof has one (deal.II's sorting
-            // costs more than the add), else added row by row.
-            if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
-                  return affine.is_constrained(i);
-                }))
+            // costs more than the add), else added row by row; straight
+            // into the compact system if there is one.
+            if (compact)
+              add_to_compact(dofs, k);
+            else if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
+                       return affine.is_constrained(i);
+                     }))
               affine.distribute_local_to_global(k, dofs, condensed_matrix);
             else
               for (unsigned int i = 0; i < dofs.size(); ++i)
@@ -333,7 +416,12 @@ namespace ndda
           b);
       }
     else if (!base_factorized)
-      condensed_matrix.copy_from(condensed_base);
+      {
+        if (compact)
+          compact_matrix.copy_from(compact_base);
+        else
+          condensed_matrix.copy_from(condensed_base);
+      }
     if (in_frame)
       frames->to_frame(b);
 

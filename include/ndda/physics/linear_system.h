@@ -234,13 +234,42 @@ namespace ndda
     /// (added through the lines, block by block).
     SparseMatrix<double> condensed_matrix;
     /// The compact system: the unconstrained dofs (in order), the index
-    /// of every dof among them (invalid: constrained), and the condensed
-    /// matrix on them, which the solver then gets.
+    /// of every dof among them (invalid: constrained), the condensed
+    /// system matrix on them (once per prepare_step() that changes it),
+    /// and that matrix with the contact springs of the solve, which the
+    /// solver then gets.
     bool                                 compact = false;
     std::vector<types::global_dof_index> free_dofs;
     std::vector<types::global_dof_index> compact_index;
     SparsityPattern                      compact_pattern;
+    SparseMatrix<double>                 compact_base;
     SparseMatrix<double>                 compact_matrix;
+    /// Every dof in compact unknowns (CSR): a free dof is its own, a dof
+    /// on a homogeneous line the line's masters with their weights, a
+    /// dof of an exact constraint none (its value is prescribed).
+    std::vector<unsigned int>            expansion_start;
+    std::vector<types::global_dof_index> expansion_column;
+    std::vector<double>                  expansion_weight;
+    /// Buffers of add_to_compact().
+    struct
+    {
+      std::vector<types::global_dof_index> columns;
+      std::vector<double>                  t, kt, tkt;
+    } scratch;
+
+    /** The expansion of every dof in compact unknowns (reinit). */
+    void
+    setup_expansion(const AffineConstraints<double> &affine);
+
+    /**
+     * Add the dense spring block @p k on the dofs @p dofs to the compact
+     * matrix through the expansion: T^T k T, T the expansion of the dofs
+     * (the lines of the reduced blocks applied to the block before it is
+     * added, not entry by entry).
+     */
+    void
+    add_to_compact(const std::vector<types::global_dof_index> &dofs,
+                   const FullMatrix<double>                   &k);
 
     /** Solve the changed condensed system for @p b into @p d: GMRES with
      * the last factorization, or a new factorization (of a system with
@@ -251,7 +280,7 @@ namespace ndda
                   const bool            springs,
                   const unsigned int    reuse_iterations);
 
-    /** The solver's matrix: the condensed matrix, or its compact copy. */
+    /** The solver's matrix: the condensed matrix, or the compact one. */
     const SparseMatrix<double> &
     solver_matrix();
 
