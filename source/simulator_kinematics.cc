@@ -33,9 +33,10 @@ namespace ndda
   bool
   Simulator<dim>::promote_blocks(const Vector<double> *d)
   {
+    if (!automatic.enabled() || parameters.fracture.criterion == nullptr)
+      return false;
     const auto meshed = fem.meshed_blocks();
-    if (!automatic.enabled() || parameters.fracture.criterion == nullptr ||
-        !automatic.any_auto_block(meshed, false))
+    if (!automatic.any_auto_block(meshed, false))
       return false;
     TimerOutput::Scope scope(timer, "kinematics switch");
     // The trial end of the step being solved: stresses advanced by d,
@@ -69,9 +70,10 @@ namespace ndda
   void
   Simulator<dim>::demote_blocks()
   {
+    if (!automatic.enabled() || parameters.fracture.criterion == nullptr)
+      return;
     const auto meshed = fem.meshed_blocks();
-    if (!automatic.enabled() || parameters.fracture.criterion == nullptr ||
-        !automatic.any_auto_block(meshed, true))
+    if (!automatic.any_auto_block(meshed, true))
       return;
     TimerOutput::Scope   scope(timer, "kinematics switch");
     const Vector<double> no_force;
