@@ -234,8 +234,8 @@ namespace user
   {
   public:
     void
-    add_statistics(const Simulator<2> &simulator,
-                   TableHandler       &statistics) const override
+    add_statistics(const Simulator<2>           &simulator,
+                   postprocess::StatisticsTable &statistics) const override
     {
       const auto         &mesh = simulator.get_mesh();
       const auto         &u    = simulator.get_displacement();

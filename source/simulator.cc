@@ -26,7 +26,7 @@ namespace ndda
     : parameters(parameters)
     , console(std::cout.rdbuf())
     , pcout(console, true)
-    , timer(pcout, TimerOutput::never, TimerOutput::wall_times)
+    , timer()
     , fem(mesh, timer)
   {
     if (triangulation != nullptr)
@@ -50,7 +50,7 @@ namespace ndda
   void
   Simulator<dim>::setup()
   {
-    TimerOutput::Scope scope(timer, "setup");
+    SectionTimer::Scope scope(timer, "setup");
     scene::build_mesh(parameters, user_triangulation.get(), mesh);
     scene_half_height = scene::half_height(mesh);
     fem.setup_kinematics(parameters);
@@ -158,7 +158,7 @@ namespace ndda
   Simulator<dim>::build_element_matrices(const bool only_moved_cells,
                                          const bool always)
   {
-    TimerOutput::Scope scope(timer, "element matrices");
+    SectionTimer::Scope scope(timer, "element matrices");
     // The first step uses the element matrices that setup() computed (it
     // needed them for the initial internal force; a tangent that depends
     // on the stress is rebuilt from the initial stresses); later steps
@@ -187,7 +187,7 @@ namespace ndda
     // f_ext(t1) - f_int + inertia terms of the integrator.
     Vector<double> rhs;
     {
-      TimerOutput::Scope scope(timer, "solve");
+      SectionTimer::Scope scope(timer, "solve");
       assemble_external_force(time + dt, step_external_force);
       rhs = step_external_force;
       rhs -= internal_force;
@@ -249,7 +249,7 @@ namespace ndda
   void
   Simulator<dim>::commit_step(const Vector<double> &d, const double dt)
   {
-    TimerOutput::Scope scope(timer, "update");
+    SectionTimer::Scope scope(timer, "update");
     // Velocity and acceleration at the end of the step.
     const auto &mass = fem.linear_system.get_mass_matrix();
     parameters.control.time_integrator->update(
@@ -302,8 +302,8 @@ namespace ndda
   std::vector<std::array<unsigned int, 2>>
   Simulator<dim>::check_fracture(const Vector<double> &d, const double dt)
   {
-    TimerOutput::Scope scope(timer, "fracture check");
-    const auto        &block_mesh = mesh.get_block_mesh();
+    SectionTimer::Scope scope(timer, "fracture check");
+    const auto         &block_mesh = mesh.get_block_mesh();
     // The step's trial end: vertices moved by the increment, stresses
     // advanced by it (as commit_step() will do, if no edge cracks).
     std::vector<Point<dim>> end_vertices = block_mesh.vertices;
@@ -326,7 +326,7 @@ namespace ndda
   Simulator<dim>::crack_edges(
     const std::vector<std::array<unsigned int, 2>> &edges)
   {
-    TimerOutput::Scope scope(timer, "crack");
+    SectionTimer::Scope scope(timer, "crack");
     // What the old dof numbering carries, before crack() empties the
     // DoFHandler: dof vectors by cell, the acceleration as M a over the
     // lumped mass.
@@ -443,7 +443,7 @@ namespace ndda
     if (parameters.contact.enabled)
       {
         {
-          TimerOutput::Scope scope(timer, "contact detection");
+          SectionTimer::Scope scope(timer, "contact detection");
           contacts.begin_step(mesh.get_block_mesh().vertices,
                               contact_distances.detection);
         }
@@ -471,7 +471,7 @@ namespace ndda
   {
     if (!is_set_up)
       setup();
-    Timer wall;
+    WallClock wall;
     prepare_step();
     step_controller.begin_step(step_number + 1, time);
 
@@ -522,7 +522,7 @@ namespace ndda
     n_crack_events += crack_events;
     ++step_number;
     measure_points.record(time, displacement, kinematics.velocity, stresses);
-    last_step_time = wall.wall_time();
+    last_step_time = wall.seconds();
     record_statistics(dt);
     // The statistics of this step are recorded before a crawling run is
     // stopped.
@@ -545,6 +545,7 @@ namespace ndda
     step_report.crack_events      = n_crack_events;
     step_report.crack_limit_hit   = crack_limit_hit;
     step_report.failing_edges     = fracture_check.n_failing_edges();
+    statistics.start_row();
     for (const auto &postprocessor : parameters.postprocess.postprocessors)
       postprocessor->add_statistics(*this, statistics);
   }
@@ -567,7 +568,7 @@ namespace ndda
   void
   Simulator<dim>::output_results()
   {
-    TimerOutput::Scope scope(timer, "output");
+    SectionTimer::Scope scope(timer, "output");
     visualization.write_frame(*this, parameters.postprocess.postprocessors);
   }
 
@@ -577,9 +578,7 @@ namespace ndda
   void
   Simulator<dim>::write_statistics() const
   {
-    std::ofstream out(parameters.output.directory + "statistics");
-    statistics.write_text(out,
-                          TableHandler::table_with_separate_column_description);
+    statistics.write(parameters.output.directory + "statistics");
     measure_points.write(parameters.output.directory + "measure_points.txt");
   }
 
@@ -605,7 +604,7 @@ namespace ndda
     pcout << "ndda: scene '" << parameters.scene_name << "'\n"
           << fem.summary() << ", output: " << directory << std::endl;
 
-    Timer                       wall;
+    WallClock                   wall;
     postprocess::ProgressReport progress(parameters.output.progress_interval);
     postprocess::OutputSchedule schedule(parameters.output.interval,
                                          parameters.control.end_time);
@@ -625,10 +624,10 @@ namespace ndda
           }
         if (schedule.frame_due(time))
           output_results();
-        if (progress.due(wall.wall_time(), schedule.finished(time)))
+        if (progress.due(wall.seconds(), schedule.finished(time)))
           {
             progress.print(console,
-                           wall.wall_time(),
+                           wall.seconds(),
                            {step_number,
                             time,
                             parameters.control.end_time,
@@ -642,8 +641,9 @@ namespace ndda
           << step_controller.n_total_cuts() << " step cuts, "
           << n_matrix_rebuilds << " matrix builds, "
           << fem.linear_system.n_factorizations() << " factorizations, "
-          << wall.wall_time() << " s wall time" << std::endl;
-    timer.print_summary();
+          << wall.seconds() << " s wall time" << std::endl;
+    if (pcout.is_active())
+      timer.print_summary(pcout.get_stream());
     log_file.close();
   }
 

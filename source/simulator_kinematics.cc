@@ -38,7 +38,7 @@ namespace ndda
     const auto meshed = fem.meshed_blocks();
     if (!automatic.any_auto_block(meshed, false))
       return false;
-    TimerOutput::Scope scope(timer, "kinematics switch");
+    SectionTimer::Scope scope(timer, "kinematics switch");
     // The trial end of the step being solved: stresses advanced by d,
     // the contact forces the settled contacts will have. At the start:
     // the initial stresses.
@@ -75,7 +75,7 @@ namespace ndda
     const auto meshed = fem.meshed_blocks();
     if (!automatic.any_auto_block(meshed, true))
       return;
-    TimerOutput::Scope   scope(timer, "kinematics switch");
+    SectionTimer::Scope   scope(timer, "kinematics switch");
     const Vector<double> no_force;
     const auto           demote =
       automatic.demotions(mesh,

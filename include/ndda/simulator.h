@@ -8,8 +8,6 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
-#include <deal.II/base/table_handler.h>
-#include <deal.II/base/timer.h>
 
 #include <deal.II/dofs/dof_handler.h>
 
@@ -23,6 +21,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/base/log_file.h>
+#include <ndda/base/section_timer.h>
 #include <ndda/contact/contact_handler.h>
 #include <ndda/contact/open_close_solver.h>
 #include <ndda/fracture/edge_failure_check.h>
@@ -436,10 +435,10 @@ namespace ndda
     std::unique_ptr<Triangulation<dim>> user_triangulation;
 
     /// Console output; also copied into the log file once the run starts.
-    std::ostream        console;
-    LogFile             log_file;
-    ConditionalOStream  pcout;
-    mutable TimerOutput timer;
+    std::ostream         console;
+    LogFile              log_file;
+    ConditionalOStream   pcout;
+    mutable SectionTimer timer;
 
     CrackableMesh mesh;
     /// The finite element discretization of the blocks: element, dofs,
@@ -492,9 +491,10 @@ namespace ndda
     unsigned int               n_cracked_edges = 0;
     bool                       crack_limit_hit = false;
 
-    StepReport                       step_report;
-    TableHandler                     statistics;
-    postprocess::VisualizationWriter visualization;
+    StepReport step_report;
+    /// Rows not yet written (mutable: writing them forgets them).
+    mutable postprocess::StatisticsTable statistics;
+    postprocess::VisualizationWriter     visualization;
   };
 } // namespace ndda
 

@@ -233,6 +233,39 @@ namespace ndda
 
 
   template <int dim>
+  std::vector<typename DoFHandler<dim>::active_cell_iterator>
+  ElementCache<dim>::select_cells(const DoFHandler<dim>     &dof_handler,
+                                  const bool                 only_moved_cells,
+                                  const double               tolerance,
+                                  const std::vector<double> *frame_angles)
+  {
+    computed_cells.clear();
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        CellData &d = data[cell->active_cell_index()];
+        // A crack renumbers vertices without moving them: the deformation
+        // gradient reads the present positions through these indices.
+        for (unsigned int v = 0; v < d.vertex_indices.size(); ++v)
+          d.vertex_indices[v] = cell->vertex_index(v);
+        const double frame_angle =
+          frame_angles != nullptr ? (*frame_angles)[cell->active_cell_index()] :
+                                    0.;
+        if (only_moved_cells && !d.vertices.empty() &&
+            !moved_beyond(cell,
+                          d.vertices,
+                          tolerance * d.diameter,
+                          frame_angle - d.frame_angle))
+          continue;
+        computed_cells.push_back(cell->active_cell_index());
+        cells.push_back(cell);
+      }
+    return cells;
+  }
+
+
+
+  template <int dim>
   unsigned int
   ElementCache<dim>::update(
     const DoFHandler<dim>                                   &dof_handler,
@@ -256,13 +289,22 @@ namespace ndda
         data.resize(n_cells);
       }
     law = law_of(materials);
-    tangents.clear();
-    for (const auto &material : materials.materials)
-      tangents.push_back(law->tangent(material, materials.plane_strain));
     // A tangent that depends on the stress changes wherever the stress
     // does: every cell is computed, with the tangent at each point.
     const bool point_tangents =
       law->tangent_depends_on_stress() && stresses != nullptr;
+    // The cells to compute, first: in most steps none has moved, and the
+    // FEValues below cost more than the check.
+    const auto cells = select_cells(dof_handler,
+                                    only_moved_cells && !point_tangents,
+                                    tolerance,
+                                    frame_angles);
+    if (computed_cells.empty())
+      return 0;
+
+    tangents.clear();
+    for (const auto &material : materials.materials)
+      tangents.push_back(law->tangent(material, materials.plane_strain));
     std::vector<SymmetricTensor<4, dim>> C(n_q_points);
     const auto [partner, component] = node_pairs(fe);
 
@@ -276,30 +318,15 @@ namespace ndda
                               update_values | update_JxW_values);
     const double  t = materials.thickness;
 
-    unsigned int n_computed = 0;
-    computed_cells.clear();
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : cells)
       {
-        CellData &d = data[cell->active_cell_index()];
-        // A crack renumbers vertices without moving them: the deformation
-        // gradient reads the present positions through these indices.
-        for (unsigned int v = 0; v < d.vertex_indices.size(); ++v)
-          d.vertex_indices[v] = cell->vertex_index(v);
-        const double frame_angle =
-          frame_angles != nullptr ? (*frame_angles)[cell->active_cell_index()] :
-                                    0.;
-        if (only_moved_cells && !point_tangents && !d.vertices.empty() &&
-            !moved_beyond(cell,
-                          d.vertices,
-                          tolerance * d.diameter,
-                          frame_angle - d.frame_angle))
-          continue;
-        ++n_computed;
-        computed_cells.push_back(cell->active_cell_index());
+        const unsigned int c = cell->active_cell_index();
+        CellData          &d = data[c];
+        const double       frame_angle =
+          frame_angles != nullptr ? (*frame_angles)[c] : 0.;
         fe_values.reinit(cell);
         mass_values.reinit(cell);
-        const auto        &material = materials.materials[cell->material_id()];
-        const unsigned int c        = cell->active_cell_index();
+        const auto &material = materials.materials[cell->material_id()];
         for (unsigned int q = 0; q < n_q_points; ++q)
           C[q] = point_tangents && !(*stresses)[c].empty() ?
                    law->point_tangent(material,
@@ -319,7 +346,7 @@ namespace ndda
         add_mass_matrix(mass_values, density * t, d.mass);
         record_geometry(cell, d);
       }
-    return n_computed;
+    return computed_cells.size();
   }
 
 

@@ -16,12 +16,12 @@ namespace ndda
   namespace
   {
     /** A timer section, if there is a timer. */
-    std::optional<TimerOutput::Scope>
-    scope(TimerOutput *timer, const char *section)
+    std::optional<SectionTimer::Scope>
+    scope(SectionTimer *timer, const char *section)
     {
       if (timer == nullptr)
         return std::nullopt;
-      return std::optional<TimerOutput::Scope>(std::in_place, *timer, section);
+      return std::optional<SectionTimer::Scope>(std::in_place, *timer, section);
     }
 
   } // namespace
@@ -31,7 +31,7 @@ namespace ndda
   void
   LinearSystem::initialize(const parameters::LinearSolverType type,
                            const double                       tolerance,
-                           TimerOutput                       *timer)
+                           SectionTimer                      *timer)
   {
     this->timer   = timer;
     linear_solver = std::make_unique<LinearSolver>(type, tolerance);

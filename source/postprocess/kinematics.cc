@@ -42,7 +42,7 @@ namespace ndda
 
       void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const override
+                     StatisticsTable    &statistics) const override
       {
         const auto &fem = simulator.get_discretization();
         if (fem.all_meshed())

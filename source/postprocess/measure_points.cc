@@ -22,7 +22,10 @@ namespace ndda
         evaluators.push_back(
           make_point_evaluator(mesh, fe, dof_map, p, "Output/Measure points"));
       if (!keep_histories)
-        histories.assign(points.size(), {});
+        {
+          histories.assign(points.size(), {});
+          written_file.clear();
+        }
     }
 
 
@@ -55,15 +58,23 @@ namespace ndda
     void
     MeasurePoints::write(const std::string &file_name) const
     {
-      std::ofstream history(file_name);
-      history << "# time";
-      for (unsigned int m = 0; m < points.size(); ++m)
-        history << "  [point " << m << " at " << points[m][0] << " "
-                << points[m][1]
-                << ": u_x u_y v_x v_y sigma_xx sigma_yy sigma_xy]";
-      history << '\n' << std::setprecision(10);
+      const bool first = file_name != written_file;
+      if (first)
+        n_written = 0;
+      std::ofstream history(file_name, first ? std::ios::trunc : std::ios::app);
+      if (first)
+        {
+          history << "# time";
+          for (unsigned int m = 0; m < points.size(); ++m)
+            history << "  [point " << m << " at " << points[m][0] << " "
+                    << points[m][1]
+                    << ": u_x u_y v_x v_y sigma_xx sigma_yy sigma_xy]";
+          history << '\n';
+        }
+      history << std::setprecision(10);
+      written_file = file_name;
       if (!histories.empty())
-        for (unsigned int s = 0; s < histories[0].size(); ++s)
+        for (unsigned int s = n_written; s < histories[0].size(); ++s)
           {
             history << histories[0][s].time;
             for (const auto &h : histories)
@@ -72,6 +83,7 @@ namespace ndda
                       << h[s].stress[0][1];
             history << '\n';
           }
+      n_written = histories.empty() ? 0 : histories[0].size();
     }
   } // namespace postprocess
 } // namespace ndda

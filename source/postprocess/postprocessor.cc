@@ -74,13 +74,13 @@ namespace ndda
 
 
     void
-    Postprocessor::add_statistics(const Simulator<2> &, TableHandler &) const
+    Postprocessor::add_statistics(const Simulator<2> &, StatisticsTable &) const
     {}
 
 
 
     void
-    add_scientific(TableHandler      &statistics,
+    add_scientific(StatisticsTable   &statistics,
                    const std::string &column,
                    const double       value)
     {

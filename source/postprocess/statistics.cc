@@ -15,7 +15,7 @@ namespace ndda
     public:
       void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const override
+                     StatisticsTable    &statistics) const override
       {
         const auto &step = simulator.get_step_report();
         statistics.add_value("Time step number", simulator.get_step_number());
@@ -36,7 +36,7 @@ namespace ndda
     public:
       void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const override
+                     StatisticsTable    &statistics) const override
       {
         add_scientific(statistics,
                        "Kinetic energy (J)",
@@ -59,7 +59,7 @@ namespace ndda
     public:
       void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const override
+                     StatisticsTable    &statistics) const override
       {
         const auto &step = simulator.get_step_report();
         if (!step.fracture)
@@ -84,7 +84,7 @@ namespace ndda
     public:
       void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const override
+                     StatisticsTable    &statistics) const override
       {
         if (!simulator.get_parameters().contact.enabled)
           return;
@@ -119,7 +119,7 @@ namespace ndda
     public:
       void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const override
+                     StatisticsTable    &statistics) const override
       {
         statistics.add_value("Wall time per step (s)",
                              simulator.last_step_wall_time());

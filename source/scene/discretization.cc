@@ -16,7 +16,7 @@ namespace ndda
   namespace scene
   {
     Discretization::Discretization(CrackableMesh       &mesh,
-                                   dealii::TimerOutput &timer)
+                                   SectionTimer &timer)
       : mesh(mesh)
       , mapping(linear_mapping())
       , dof_handler(mesh.get_triangulation())

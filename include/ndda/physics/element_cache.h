@@ -169,6 +169,17 @@ namespace ndda
     }
 
   private:
+    /**
+     * The cells update() computes: all, or with @p only_moved_cells those
+     * that moved beyond @p tolerance; into computed_cells too. Refreshes
+     * every cell's vertex indices.
+     */
+    std::vector<typename DoFHandler<dim>::active_cell_iterator>
+    select_cells(const DoFHandler<dim>     &dof_handler,
+                 const bool                 only_moved_cells,
+                 const double               tolerance,
+                 const std::vector<double> *frame_angles);
+
     std::vector<CellData>                  data;
     std::shared_ptr<const ConstitutiveLaw> law;
     std::vector<SymmetricTensor<4, dim>>   tangents;

@@ -2,7 +2,6 @@
 #ifndef ndda_physics_linear_system_h
 #define ndda_physics_linear_system_h
 
-#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
@@ -10,6 +9,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <ndda/base/section_timer.h>
 #include <ndda/physics/bolts.h>
 #include <ndda/physics/constraints.h>
 #include <ndda/physics/dof_map.h>
@@ -62,7 +62,7 @@ namespace ndda
     void
     initialize(const parameters::LinearSolverType type,
                const double                       tolerance,
-               TimerOutput                       *timer = nullptr);
+               SectionTimer                      *timer = nullptr);
 
     LinearSolver &
     get_linear_solver()
@@ -216,7 +216,7 @@ namespace ndda
     reinit_matrices(DynamicSparsityPattern &dsp,
                     const Constraints      &constraints);
 
-    TimerOutput *timer = nullptr;
+    SectionTimer *timer = nullptr;
 
     /// Couplings of elements and bolts, before contacts and condensation.
     SparsityPattern element_sparsity;

@@ -74,7 +74,11 @@ namespace ndda
         return histories;
       }
 
-      /** Write every sample to the text file @p file_name. */
+      /**
+       * Write the samples to the text file @p file_name: the whole file
+       * the first time (or for another file), after that only the samples
+       * taken since, appended.
+       */
       void
       write(const std::string &file_name) const;
 
@@ -82,6 +86,9 @@ namespace ndda
       std::vector<Point<2>>                   points;
       std::vector<PointEvaluator>             evaluators;
       std::vector<std::vector<MeasureSample>> histories;
+      /// The file written last and the samples in it.
+      mutable std::string  written_file;
+      mutable unsigned int n_written = 0;
     };
   } // namespace postprocess
 } // namespace ndda

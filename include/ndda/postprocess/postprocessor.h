@@ -3,11 +3,11 @@
 #define ndda_postprocess_postprocessor_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/table_handler.h>
 
 #include <deal.II/lac/vector.h>
 
 #include <ndda/base/plugin_registry.h>
+#include <ndda/postprocess/statistics_table.h>
 
 #include <deque>
 #include <memory>
@@ -34,7 +34,6 @@ namespace ndda
   namespace postprocess
   {
     using dealii::ParameterHandler;
-    using dealii::TableHandler;
 
     /**
      * The fields of one output frame: a DataOut with the DoFHandler
@@ -114,7 +113,7 @@ namespace ndda
        */
       virtual void
       add_statistics(const Simulator<2> &simulator,
-                     TableHandler       &statistics) const;
+                     StatisticsTable    &statistics) const;
 
       /** For messages (PluginRegistry). */
       static const char *
@@ -148,7 +147,7 @@ namespace ndda
      * scientific notation with six digits.
      */
     void
-    add_scientific(TableHandler      &statistics,
+    add_scientific(StatisticsTable   &statistics,
                    const std::string &column,
                    const double       value);
 

@@ -3,7 +3,6 @@
 #define ndda_scene_discretization_h
 
 #include <deal.II/base/quadrature.h>
-#include <deal.II/base/timer.h>
 
 #include <deal.II/dofs/dof_handler.h>
 
@@ -12,6 +11,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <ndda/base/section_timer.h>
 #include <ndda/kinematics/block_kinematics.h>
 #include <ndda/kinematics/reduced_blocks.h>
 #include <ndda/mesh/crackable_mesh.h>
@@ -51,7 +51,7 @@ namespace ndda
     {
     public:
       /** On @p mesh (referenced); the linear system is timed in @p timer. */
-      Discretization(CrackableMesh &mesh, dealii::TimerOutput &timer);
+      Discretization(CrackableMesh &mesh, SectionTimer &timer);
 
       ~Discretization();
 
@@ -238,7 +238,7 @@ namespace ndda
       kinematics::ReducedBlocks reduced_blocks;
 
     private:
-      dealii::TimerOutput &timer;
+      SectionTimer &timer;
     };
   } // namespace scene
 } // namespace ndda
