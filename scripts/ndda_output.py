@@ -26,10 +26,10 @@ Debian's /usr/bin/python3 (python3-numpy).
 - cell_corners(vtu), cell_areas(vtu, corners), cell_block_ids(vtu,
   corners): the triangles of a VTU file, their areas on the mesh written
   (the deformed one) and their block ids.
-- stress_resultant(vtu, cells, component, height, thickness) and
-  plate_force(vtu, block, thickness): a force from cell stresses by the
-  mean stress theorem (the Brazilian disc's plates, a specimen's axial
-  load).
+- stress_resultant(vtu, cells, component, height, thickness): a force
+  from cell stresses by the mean stress theorem (a specimen's axial load).
+- plate_force(directory, name, times): a plate's load from its contact
+  forces (the 'block forces' statistics columns), at the given times.
 - parse_time(text): '2.1e-3' (s), '2.1ms' or '210us' in seconds.
 
 Every error names the file and what is wrong with it.
@@ -395,11 +395,24 @@ def stress_resultant(vtu, cells, component, height, thickness):
     return -thickness * np.sum(area * stress) / height
 
 
-def plate_force(vtu, block, thickness):
-    """P = -t sum_c A_c sigma_yy,c / h over the cells of one block (a
-    loading plate of height h, measured on the deformed mesh; plate_force()
-    of tests/plates.h)."""
-    corners = cell_corners(vtu)
-    chosen = cell_block_ids(vtu, corners) == block
-    y = vtu.points[corners[chosen].ravel(), 1]
-    return stress_resultant(vtu, chosen, "stress_yy", y.max() - y.min(), thickness)
+def plate_force(directory, name, times):
+    """The load P (N) on plate block `name` at each of `times` (s): the
+    vertical component of the contact forces on its nodes, compression
+    positive, from the statistics columns '<name> contact force y (N)'
+    that the 'block forces' postprocessor writes (Postprocess/block
+    forces/Blocks; plate_force() of tests/plates.h). A row is taken at
+    each time; every time must be a step's."""
+    path = os.path.join(directory, "statistics")
+    table = read_table(path)
+    column = f"{name} contact force y (N)"
+    if column not in table:
+        raise OutputError(
+            f"{path}: no column '{column}' (list the block in "
+            "'Postprocess/block forces/Blocks')"
+        )
+    t = table["Time (s)"]
+    rows = [int(np.argmin(np.abs(t - time))) for time in times]
+    for row, time in zip(rows, times):
+        if abs(t[row] - time) > 1e-9 * max(1.0, abs(time)):
+            raise OutputError(f"{path}: no row at t = {time:g} s")
+    return np.abs(table[column][rows])

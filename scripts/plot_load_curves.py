@@ -1,10 +1,9 @@
 #!/usr/bin/python3
-"""Load curves of an ndda run that need the VTU frames: the stress-strain
-curve of a compression test and the Brazilian disc's centre stress against
-2 P / (pi D t).
+"""Load curves of an ndda run: the stress-strain curve of a compression
+test and the Brazilian disc's centre stress against 2 P / (pi D t).
 
-ndda writes no reaction forces. Both curves take the load from the cell
-stresses of each VTU frame by the mean stress theorem: a body in
+The compression curve takes the load from the cell stresses of each VTU
+frame by the mean stress theorem: a body in
 equilibrium between two faces h apart (normal y) carries the force
 F = -t sum_c A_c sigma_yy,c / h (ndda_output.stress_resultant; A_c on the
 deformed mesh, sigma_yy the cell's mean stress). This is exact for a body
@@ -26,8 +25,10 @@ One point per VTU frame: write frames as often as the curve needs
   (prm/brazilian_disc*.prm): the centre's sigma_xx (measure point 0, every
   step) against time, with 2 P / (pi D t) at every frame for P from the
   top plate and from the bottom plate (blocks named 'top' and 'bottom',
-  D the disc's width, t 'Materials/Thickness'; the force of a plate by the
-  theorem above over the plate's cells, as tests/plates.h does). The
+  D the disc's width, t 'Materials/Thickness'; P the plate's contact
+  force, the statistics column '<plate> contact force y (N)' of the
+  'block forces' postprocessor, as tests/plates.h takes it: the plates
+  are rigid blocks, without stress). The
   elastic solution holds until the disc cracks; the first crack and the
   tensile strength are marked.
 
@@ -164,20 +165,11 @@ def disc_curve(directory):
     disc = ndda_output.points_of(parameters["Geometry/disc/Outer boundary"])
     diameter = disc[:, 0].max() - disc[:, 0].min()
     thickness = float(parameters.get("Materials/Thickness", "1"))
-    top, bottom = names.index("top"), names.index("bottom")
-    rows = []
-    for time, path in frames_of(directory):
-        if time <= 0:
-            continue
-        vtu = ndda_output.read_vtu(path)
-        factor = 2 / (np.pi * diameter * thickness)
-        rows.append(
-            (
-                time,
-                factor * ndda_output.plate_force(vtu, top, thickness),
-                factor * ndda_output.plate_force(vtu, bottom, thickness),
-            )
-        )
+    times = [time for time, _ in frames_of(directory) if time > 0]
+    factor = 2 / (np.pi * diameter * thickness)
+    top = ndda_output.plate_force(directory, "top", times)
+    bottom = ndda_output.plate_force(directory, "bottom", times)
+    rows = [(time, factor * p, factor * q) for time, p, q in zip(times, top, bottom)]
     return np.array(rows), diameter, thickness, parameters
 
 

@@ -92,13 +92,13 @@ main(int argc, char **argv)
         simulator.do_time_step();
         const double sxx =
           simulator.get_measure_histories()[0].back().stress[0][0];
-        const double p_top = plate_force(simulator, top, t);
+        const double p_top = plate_force(simulator, top);
         if (simulator.get_n_cracked_edges() == 0)
           {
             samples.push_back({simulator.get_time(),
                                sxx,
                                p_top,
-                               plate_force(simulator, bottom, t),
+                               plate_force(simulator, bottom),
                                kinetic_energy_of(simulator, "disc"),
                                simulator.strain_energy()});
             continue;
@@ -257,7 +257,7 @@ main(int argc, char **argv)
     while (simulator.get_time() < 1.7e-3 - 1e-12)
       {
         simulator.do_time_step();
-        const double p_now = plate_force(simulator, top, t);
+        const double p_now = plate_force(simulator, top);
         const double sxx_now =
           simulator.get_measure_histories()[0].back().stress[0][0];
         p_max   = std::max(p_max, p_now);

@@ -111,7 +111,7 @@ main(int argc, char **argv)
       if (simulator.get_first_edge_failure().mode ==
           ndda::fracture::FailureMode::none)
         {
-          p_crack = plate_force(simulator, top, t);
+          p_crack = plate_force(simulator, top);
           continue;
         }
       if (crack_time < 0)

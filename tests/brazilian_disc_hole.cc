@@ -133,7 +133,7 @@ namespace
     while (simulator.get_time() < end_time - 1e-12)
       {
         simulator.do_time_step();
-        const double p = plate_force(simulator, top, t);
+        const double p = plate_force(simulator, top);
         result.p       = p;
         result.ratio_top =
           nodal_sigma_xx(simulator, dealii::Point<2>(0, a)) / hobbs(p, t);
@@ -205,7 +205,7 @@ main(int argc, char **argv)
         if (simulator.get_n_cracked_edges() == 0)
           {
             // The last step before the first crack.
-            p_crack  = plate_force(simulator, top, t);
+            p_crack  = plate_force(simulator, top);
             s_top    = nodal_sigma_xx(simulator, dealii::Point<2>(0, a));
             s_bottom = nodal_sigma_xx(simulator, dealii::Point<2>(0, -a));
             continue;

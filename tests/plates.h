@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Helpers of the tests of scenes whose blocks are loaded through plates
-// (the Brazilian discs): the plate force from the plate's stresses, the
+// (the Brazilian discs): the plate force from the plate's contacts, the
 // kinetic energy of some blocks, blocks by name.
 #ifndef ndda_tests_plates_h
 #define ndda_tests_plates_h
 
 #include <ndda/fracture/fracture_criterion.h>
+#include <ndda/postprocess/block_forces.h>
 #include <ndda/simulator.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "tests.h"
@@ -17,31 +19,17 @@
 namespace ndda_tests
 {
   /**
-   * The force P through plate @p block: P = -t sum_c A_c sigma_yy,c / h,
-   * h the plate's height, on the present geometry.
+   * The load P on plate @p block: the vertical component of the contact
+   * forces on its nodes at the end of the last step (compression
+   * positive; postprocess::contact_force_on_block(), the 'block forces'
+   * statistics columns). The plates are rigid blocks: they have no stress
+   * to read the load from.
    */
   inline double
-  plate_force(const ndda::Simulator<2> &simulator,
-              const unsigned int        block,
-              const double              thickness)
+  plate_force(const ndda::Simulator<2> &simulator, const unsigned int block)
   {
-    const auto &mesh = simulator.get_mesh().get_block_mesh();
-    double      sum = 0, y_min = 1e9, y_max = -1e9;
-    for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
-      if (mesh.cell_block[c] == block)
-        {
-          const auto &t = mesh.triangles[c];
-          const auto  a = mesh.vertices[t[1]] - mesh.vertices[t[0]];
-          const auto  b = mesh.vertices[t[2]] - mesh.vertices[t[0]];
-          sum += 0.5 * (a[0] * b[1] - a[1] * b[0]) *
-                 simulator.mean_cell_stress(c)[1][1];
-          for (const unsigned int v : t)
-            {
-              y_min = std::min(y_min, mesh.vertices[v][1]);
-              y_max = std::max(y_max, mesh.vertices[v][1]);
-            }
-        }
-    return -thickness * sum / (y_max - y_min);
+    return std::abs(
+      ndda::postprocess::contact_force_on_block(simulator, block)[1]);
   }
 
   /** Kinetic energy of the blocks whose name starts with @p prefix. */

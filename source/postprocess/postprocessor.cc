@@ -36,6 +36,8 @@ namespace ndda
     link_plugin_WallTime();
     void
     link_plugin_KinematicsOutput();
+    void
+    link_plugin_BlockForces();
 
     void
     Postprocessor::link_builtin_plugins()
@@ -51,6 +53,7 @@ namespace ndda
       link_plugin_ContactColumns();
       link_plugin_WallTime();
       link_plugin_KinematicsOutput();
+      link_plugin_BlockForces();
     }
 
 
@@ -97,7 +100,7 @@ namespace ndda
       /// the VTU fields and the statistics columns.
       const char *default_list =
         "displacement, velocity, stress, block and material, crack faces, "
-        "kinematics, time step, energy, fracture, contact";
+        "kinematics, time step, energy, fracture, contact, block forces";
     } // namespace
 
 
