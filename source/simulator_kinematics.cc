@@ -75,7 +75,7 @@ namespace ndda
     const auto meshed = fem.meshed_blocks();
     if (!automatic.any_auto_block(meshed, true))
       return;
-    SectionTimer::Scope   scope(timer, "kinematics switch");
+    SectionTimer::Scope  scope(timer, "kinematics switch");
     const Vector<double> no_force;
     const auto           demote =
       automatic.demotions(mesh,

@@ -15,8 +15,7 @@ namespace ndda
 {
   namespace scene
   {
-    Discretization::Discretization(CrackableMesh       &mesh,
-                                   SectionTimer &timer)
+    Discretization::Discretization(CrackableMesh &mesh, SectionTimer &timer)
       : mesh(mesh)
       , mapping(linear_mapping())
       , dof_handler(mesh.get_triangulation())
