@@ -9,6 +9,13 @@
 // detect()'s time / (n log2 n), and the growth of detect()'s time from the
 // previous size, next to the growth of n log2 n.
 //
+// Then a time stepping of the 1e4- and 1e5-edge grids: 50 steps in which
+// every vertex moves by a random amount of up to 1e-4 in each direction
+// (about the wall's motion per step against its detection distance), and
+// every step calls detect() and a contact::NeighbourList's detect(), in
+// turns (which one goes first alternates). It prints the mean time of
+// each per step, their ratio and the list's builds.
+//
 // Usage: contact_detection [max_edges]   (default 1e6)
 
 #include <ndda/contact/contact_detection.h>
@@ -20,6 +27,7 @@
 #include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <random>
 #include <vector>
 
 using namespace ndda;
@@ -61,6 +69,51 @@ namespace
     return std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                          start)
       .count();
+  }
+
+
+  /** detect() against a NeighbourList over @p n_steps steps of motion. */
+  void
+  time_stepping(const double       n_edges,
+                const double       gap,
+                const double       threshold,
+                const unsigned int n_steps)
+  {
+    const unsigned int m =
+      static_cast<unsigned int>(std::lround(std::sqrt(n_edges / 4.)));
+    auto                                   mesh  = square_grid(m, gap);
+    const auto                             edges = boundary_edges(mesh);
+    std::mt19937                           random(1);
+    std::uniform_real_distribution<double> motion(-1e-4, 1e-4);
+    contact::NeighbourList                 list;
+    double                                 fresh_time = 0, list_time = 0;
+    bool                                   same = true;
+    for (unsigned int step = 0; step < n_steps; ++step)
+      {
+        for (auto &v : mesh.vertices)
+          v += dealii::Tensor<1, 2>({motion(random), motion(random)});
+        std::vector<contact::Candidate> fresh, listed;
+        for (unsigned int turn = 0; turn < 2; ++turn)
+          {
+            const auto start = std::chrono::steady_clock::now();
+            if ((turn + step) % 2 == 0)
+              {
+                fresh = contact::detect(mesh.vertices, edges, threshold);
+                fresh_time += seconds_since(start);
+              }
+            else
+              {
+                listed = list.detect(mesh.vertices, edges, threshold);
+                list_time += seconds_since(start);
+              }
+          }
+        same = same && fresh.size() == listed.size();
+      }
+    std::cout << std::setw(9) << edges.size() << std::setw(14)
+              << std::setprecision(4) << 1e3 * fresh_time / n_steps
+              << std::setw(14) << 1e3 * list_time / n_steps << std::setw(10)
+              << fresh_time / list_time << std::setw(9) << list.n_builds()
+              << std::setw(7) << (same ? "yes" : "NO") << std::endl;
   }
 } // namespace
 
@@ -115,5 +168,13 @@ main(int argc, char **argv)
       previous_time  = time;
       previous_nlogn = nlogn;
     }
+
+  std::cout << "\n50 steps of motion (up to 1e-4 per step and direction)\n"
+            << std::setw(9) << "n_edges" << std::setw(14) << "detect[ms]"
+            << std::setw(14) << "list[ms]" << std::setw(10) << "ratio"
+            << std::setw(9) << "builds" << std::setw(7) << "same" << std::endl;
+  for (const double target : {1e4, 1e5})
+    if (target <= max_edges)
+      time_stepping(target, gap, threshold, 50);
   return 0;
 }

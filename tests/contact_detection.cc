@@ -6,7 +6,11 @@
 //  3. a block with a crack (split_vertices_along_edges): the crack faces
 //     find each other, adjacent edges never do;
 //  4. a random scene of small blocks: detect() against an O(n^2) loop over
-//     all pairs of boundary edges.
+//     all pairs of boundary edges;
+//  5. the same scene in random motion (every block translated and turned
+//     by a random amount each step, some steps far beyond the list's skin,
+//     the threshold changing): a NeighbourList gives detect()'s candidates
+//     in every step, and rebuilds only when it must.
 
 #include <ndda/contact/contact_detection.h>
 #include <ndda/geometry/block_mesh.h>
@@ -381,12 +385,10 @@ namespace
   }
 
 
-  void
-  test_random_scene()
+  /** 100 triangles and 100 rotated squares in the unit square. */
+  geometry::BlockMesh
+  random_scene()
   {
-    std::cout << "4. random scene: 100 triangles and 100 rotated squares in "
-                 "the unit square"
-              << std::endl;
     std::mt19937                           random(42);
     std::uniform_real_distribution<double> unit(0., 1.);
     geometry::BlockMesh                    mesh;
@@ -410,18 +412,38 @@ namespace
         mesh.cell_material.insert(mesh.cell_material.end(), corners - 2, 0);
         mesh.block_names.push_back("b" + std::to_string(b));
       }
-    const auto edges = boundary_edges(mesh);
+    return mesh;
+  }
+
+
+  /** True if @p a and @p b are the same candidates, field by field. */
+  bool
+  same_candidates(const std::vector<Candidate> &a,
+                  const std::vector<Candidate> &b)
+  {
+    bool same = (a.size() == b.size());
+    for (unsigned int k = 0; same && k < a.size(); ++k)
+      same = a[k].vertex == b[k].vertex && a[k].edge == b[k].edge &&
+             a[k].type == b[k].type && a[k].distance == b[k].distance &&
+             a[k].edge_ratio == b[k].edge_ratio;
+    return same;
+  }
+
+
+  void
+  test_random_scene()
+  {
+    std::cout << "4. random scene: 100 triangles and 100 rotated squares in "
+                 "the unit square"
+              << std::endl;
+    const geometry::BlockMesh mesh  = random_scene();
+    const auto                edges = boundary_edges(mesh);
     check(edges.size() == 100 * 3 + 100 * 4, "random: 700 boundary edges");
     for (const double threshold : {0., 0.005, 0.02, 0.1})
       {
         const auto fast = contact::detect(mesh.vertices, edges, threshold);
         const auto slow = brute_force(mesh.vertices, edges, threshold);
-        bool       same = (fast.size() == slow.size());
-        for (unsigned int k = 0; same && k < fast.size(); ++k)
-          same = fast[k].vertex == slow[k].vertex &&
-                 fast[k].edge == slow[k].edge && fast[k].type == slow[k].type &&
-                 fast[k].distance == slow[k].distance &&
-                 fast[k].edge_ratio == slow[k].edge_ratio;
+        const bool same = same_candidates(fast, slow);
         std::cout << "  threshold " << threshold << ": detect " << fast.size()
                   << " candidates ("
                   << count(fast, CandidateType::vertex_vertex)
@@ -431,6 +453,66 @@ namespace
         if (threshold >= 0.02)
           check(!fast.empty(), "random: the scene has contacts");
       }
+  }
+
+
+  void
+  test_neighbour_list()
+  {
+    std::cout << "5. the random scene in motion, 400 steps: NeighbourList "
+                 "against detect()"
+              << std::endl;
+    geometry::BlockMesh                    mesh  = random_scene();
+    const auto                             edges = boundary_edges(mesh);
+    std::mt19937                           random(7);
+    std::uniform_real_distribution<double> unit(-1., 1.);
+    contact::NeighbourList                 list;
+    unsigned int       n_same = 0, n_candidates = 0, n_jumps = 0;
+    const unsigned int n_steps = 400;
+    for (unsigned int step = 0; step < n_steps; ++step)
+      {
+        // Every block moves by a random increment: mostly small against the
+        // threshold, every 50th step a jump of several thresholds.
+        const double threshold = 0.01 + 0.01 * (step % 3);
+        const double scale     = (step % 50 == 49 ? 0.05 : 0.001);
+        n_jumps += (step % 50 == 49);
+        for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
+          {
+            const dealii::Tensor<1, 2> shift(
+              {scale * unit(random), scale * unit(random)});
+            const double              angle = 10. * scale * unit(random);
+            std::vector<unsigned int> nodes;
+            for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
+              if (mesh.cell_block[c] == b)
+                nodes.insert(nodes.end(),
+                             mesh.triangles[c].begin(),
+                             mesh.triangles[c].end());
+            std::sort(nodes.begin(), nodes.end());
+            nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+            const Point<2> center = mesh.vertices[nodes[0]];
+            for (const unsigned int v : nodes)
+              {
+                const dealii::Tensor<1, 2> r = mesh.vertices[v] - center;
+                mesh.vertices[v] =
+                  center + shift +
+                  dealii::Tensor<1, 2>(
+                    {std::cos(angle) * r[0] - std::sin(angle) * r[1],
+                     std::sin(angle) * r[0] + std::cos(angle) * r[1]});
+              }
+          }
+        const auto cached = list.detect(mesh.vertices, edges, threshold);
+        const auto fresh  = contact::detect(mesh.vertices, edges, threshold);
+        n_same += same_candidates(cached, fresh);
+        n_candidates += fresh.size();
+      }
+    std::cout << "  identical in " << n_same << " of " << n_steps << " steps ("
+              << n_candidates << " candidates in all), " << list.n_builds()
+              << " builds of the list" << std::endl;
+    check(n_same == n_steps, "neighbour list: detect()'s candidates");
+    check(n_candidates > 10 * n_steps,
+          "neighbour list: the scene has contacts");
+    check(list.n_builds() > n_jumps, "neighbour list: rebuilt after jumps");
+    check(list.n_builds() < n_steps / 4, "neighbour list: reused");
   }
 } // namespace
 
@@ -444,6 +526,7 @@ main(int argc, char **argv)
   test_crack();
   test_meshed_crack();
   test_random_scene();
+  test_neighbour_list();
   std::cout << "OK" << std::endl;
   return 0;
 }

@@ -38,6 +38,50 @@ namespace ndda
           std::make_pair(Point<2>(std::min(a[0], b[0]), std::min(a[1], b[1])),
                          Point<2>(std::max(a[0], b[0]), std::max(a[1], b[1]))));
       }
+
+
+      /**
+       * Broad phase: calls @p f(i, j) once for every pair of edges i < j
+       * that share no vertex and whose boxes are at most @p reach apart
+       * along each axis. The tree holds the grown boxes; every edge
+       * queries it with its own box. Two boxes at most `reach` apart along
+       * each axis are reported, which every vertex-edge distance <= reach
+       * implies. The relation is symmetric, so each pair is handled once,
+       * by its lower edge index.
+       */
+      template <typename Function>
+      void
+      for_each_edge_pair(const std::vector<Point<2>>     &vertices,
+                         const std::vector<BoundaryEdge> &edges,
+                         const double                     reach,
+                         const Function                  &f)
+      {
+        namespace bgi = boost::geometry::index;
+        using Leaf    = std::pair<BoundingBox<2>, unsigned int>;
+
+        std::vector<Leaf>           grown(edges.size());
+        std::vector<BoundingBox<2>> own(edges.size());
+        for (unsigned int e = 0; e < edges.size(); ++e)
+          {
+            own[e]   = edge_box(vertices, edges[e]);
+            grown[e] = {own[e], e};
+            grown[e].first.extend(reach);
+          }
+        const auto tree = dealii::pack_rtree(grown);
+
+        std::vector<Leaf> hits;
+        for (unsigned int i = 0; i < edges.size(); ++i)
+          {
+            hits.clear();
+            tree.query(bgi::intersects(own[i]), std::back_inserter(hits));
+            for (const Leaf &hit : hits)
+              {
+                const unsigned int j = hit.second;
+                if (j > i && !share_vertex(edges[i], edges[j]))
+                  f(i, j);
+              }
+          }
+      }
     } // namespace
 
 
@@ -90,48 +134,24 @@ namespace ndda
       AssertThrow(threshold >= 0.,
                   dealii::ExcMessage("The contact detection threshold must "
                                      "not be negative."));
-      namespace bgi = boost::geometry::index;
-      using Leaf    = std::pair<BoundingBox<2>, unsigned int>;
-
-      // Broad phase: the tree holds the grown boxes; every edge queries it
-      // with its own box. Two boxes at most `threshold` apart along each
-      // axis are reported, which every vertex-edge distance <= threshold
-      // implies. The relation is symmetric, so each pair is handled once,
-      // by its lower edge index.
-      std::vector<Leaf>           grown(edges.size());
-      std::vector<BoundingBox<2>> own(edges.size());
-      for (unsigned int e = 0; e < edges.size(); ++e)
-        {
-          own[e]   = edge_box(vertices, edges[e]);
-          grown[e] = {own[e], e};
-          grown[e].first.extend(threshold);
-        }
-      const auto tree = dealii::pack_rtree(grown);
-
+      // Narrow phase for every pair within reach: the end vertices of each
+      // edge against the other edge.
       std::vector<Candidate> candidates;
-      std::vector<Leaf>      hits;
       Candidate              candidate;
-      for (unsigned int i = 0; i < edges.size(); ++i)
-        {
-          hits.clear();
-          tree.query(bgi::intersects(own[i]), std::back_inserter(hits));
-          for (const Leaf &hit : hits)
-            {
-              const unsigned int j = hit.second;
-              if (j <= i || share_vertex(edges[i], edges[j]))
-                continue;
-              // Narrow phase: the end vertices of each edge against the
-              // other edge.
-              for (const unsigned int v : {edges[j].v0, edges[j].v1})
-                if (vertex_edge_candidate(
-                      vertices, v, edges, i, threshold, candidate))
-                  candidates.push_back(candidate);
-              for (const unsigned int v : {edges[i].v0, edges[i].v1})
-                if (vertex_edge_candidate(
-                      vertices, v, edges, j, threshold, candidate))
-                  candidates.push_back(candidate);
-            }
-        }
+      for_each_edge_pair(
+        vertices,
+        edges,
+        threshold,
+        [&](const unsigned int i, const unsigned int j) {
+          for (const unsigned int v : {edges[j].v0, edges[j].v1})
+            if (vertex_edge_candidate(
+                  vertices, v, edges, i, threshold, candidate))
+              candidates.push_back(candidate);
+          for (const unsigned int v : {edges[i].v0, edges[i].v1})
+            if (vertex_edge_candidate(
+                  vertices, v, edges, j, threshold, candidate))
+              candidates.push_back(candidate);
+        });
 
       // A vertex is an end point of two (or more) boundary edges, so it may
       // have been tested against the same edge more than once, always with
@@ -147,6 +167,108 @@ namespace ndda
                                             a.edge == b.edge;
                                    }),
                        candidates.end());
+      return candidates;
+    }
+
+
+
+    NeighbourList::NeighbourList(const double skin_factor)
+      : skin_factor(skin_factor)
+    {
+      AssertThrow(skin_factor >= 0.,
+                  dealii::ExcMessage("The skin of a neighbour list must not "
+                                     "be negative."));
+    }
+
+
+
+    void
+    NeighbourList::clear()
+    {
+      tests.clear();
+      boundary_vertices.clear();
+      built_at.clear();
+      reach = -1;
+    }
+
+
+
+    bool
+    NeighbourList::covers(const std::vector<Point<2>>     &vertices,
+                          const std::vector<BoundaryEdge> &edges,
+                          const double                     threshold) const
+    {
+      if (reach < 0 || edges.size() != n_edges || vertices.size() != n_vertices)
+        return false;
+      // The largest motion m of an end point since the build, against
+      // threshold + 2 m <= reach.
+      const double allowed = 0.5 * (reach - threshold);
+      if (allowed < 0)
+        return false;
+      const double allowed2 = allowed * allowed;
+      for (unsigned int k = 0; k < boundary_vertices.size(); ++k)
+        if (vertices[boundary_vertices[k]].distance_square(built_at[k]) >
+            allowed2)
+          return false;
+      return true;
+    }
+
+
+
+    void
+    NeighbourList::build(const std::vector<Point<2>>     &vertices,
+                         const std::vector<BoundaryEdge> &edges,
+                         const double                     threshold)
+    {
+      reach = threshold * (1. + skin_factor);
+      tests.clear();
+      for_each_edge_pair(vertices,
+                         edges,
+                         reach,
+                         [&](const unsigned int i, const unsigned int j) {
+                           tests.emplace_back(edges[j].v0, i);
+                           tests.emplace_back(edges[j].v1, i);
+                           tests.emplace_back(edges[i].v0, j);
+                           tests.emplace_back(edges[i].v1, j);
+                         });
+      std::sort(tests.begin(), tests.end());
+      tests.erase(std::unique(tests.begin(), tests.end()), tests.end());
+
+      boundary_vertices.clear();
+      for (const BoundaryEdge &e : edges)
+        {
+          boundary_vertices.push_back(e.v0);
+          boundary_vertices.push_back(e.v1);
+        }
+      std::sort(boundary_vertices.begin(), boundary_vertices.end());
+      boundary_vertices.erase(std::unique(boundary_vertices.begin(),
+                                          boundary_vertices.end()),
+                              boundary_vertices.end());
+      built_at.resize(boundary_vertices.size());
+      for (unsigned int k = 0; k < boundary_vertices.size(); ++k)
+        built_at[k] = vertices[boundary_vertices[k]];
+      n_edges    = edges.size();
+      n_vertices = vertices.size();
+      ++builds;
+    }
+
+
+
+    std::vector<Candidate>
+    NeighbourList::detect(const std::vector<Point<2>>     &vertices,
+                          const std::vector<BoundaryEdge> &edges,
+                          const double                     threshold)
+    {
+      AssertThrow(threshold >= 0.,
+                  dealii::ExcMessage("The contact detection threshold must "
+                                     "not be negative."));
+      if (!covers(vertices, edges, threshold))
+        build(vertices, edges, threshold);
+      std::vector<Candidate> candidates;
+      Candidate              candidate;
+      for (const auto &[v, e] : tests)
+        if (vertex_edge_candidate(vertices, v, edges, e, threshold, candidate))
+          candidates.push_back(candidate);
       return candidates;
     }
   } // namespace contact

@@ -32,6 +32,7 @@ namespace ndda
       edge_friction = friction_in;
       dofs          = &dofs_in;
       settings      = settings_in;
+      neighbours.clear();
       if (!settings.law)
         settings.law = create_contact_law(default_contact_law);
 
@@ -86,7 +87,7 @@ namespace ndda
         measure_block_edges(vertices); // on the first step's geometry
 
       const std::vector<Candidate> candidates =
-        detect(vertices, edges, threshold);
+        neighbours.detect(vertices, edges, threshold);
       statistics.n_candidates = candidates.size();
 
       // The narrow phase, one contact type after the other.

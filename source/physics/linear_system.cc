@@ -132,7 +132,8 @@ namespace ndda
   LinearSystem::add_to_compact(const std::vector<types::global_dof_index> &dofs,
                                const FullMatrix<double>                   &k)
   {
-    // The compact unknowns the block touches (sorted) and T (n x m); the
+    // The compact unknowns the block touches (sorted), and T (n x m) in
+    // sparse rows: a dof expands to one to a few compact unknowns. The
     // blocks are small (8 x 8 to 14 x 14): plain loops, no allocation.
     const unsigned int n       = dofs.size();
     auto              &columns = scratch.columns;
@@ -145,29 +146,44 @@ namespace ndda
     const unsigned int m = columns.size();
     if (m == 0)
       return;
-    auto &t = scratch.t;
-    t.assign(n * m, 0.);
+    auto &start    = scratch.row_start;
+    auto &position = scratch.position;
+    auto &weight   = scratch.weight;
+    start.assign(1, 0);
+    position.clear();
+    weight.clear();
     for (unsigned int i = 0; i < n; ++i)
-      for (auto e = expansion_start[dofs[i]]; e < expansion_start[dofs[i] + 1];
-           ++e)
-        t[i * m + (std::lower_bound(
-                     columns.begin(), columns.end(), expansion_column[e]) -
-                   columns.begin())] += expansion_weight[e];
+      {
+        for (auto e = expansion_start[dofs[i]];
+             e < expansion_start[dofs[i] + 1];
+             ++e)
+          {
+            position.push_back(std::lower_bound(columns.begin(),
+                                                columns.end(),
+                                                expansion_column[e]) -
+                               columns.begin());
+            weight.push_back(expansion_weight[e]);
+          }
+        start.push_back(position.size());
+      }
     // k t (n x m), then t^T k t (m x m).
     auto &kt = scratch.kt;
     kt.assign(n * m, 0.);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int l = 0; l < n; ++l)
         if (const double kil = k(i, l); kil != 0.)
-          for (unsigned int b = 0; b < m; ++b)
-            kt[i * m + b] += kil * t[l * m + b];
+          for (unsigned int q = start[l]; q < start[l + 1]; ++q)
+            kt[i * m + position[q]] += kil * weight[q];
     auto &tkt = scratch.tkt;
     tkt.assign(m * m, 0.);
     for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int a = 0; a < m; ++a)
-        if (const double tia = t[i * m + a]; tia != 0.)
+      for (unsigned int q = start[i]; q < start[i + 1]; ++q)
+        {
+          const double w   = weight[q];
+          double      *row = &tkt[position[q] * m];
           for (unsigned int b = 0; b < m; ++b)
-            tkt[a * m + b] += tia * kt[i * m + b];
+            row[b] += w * kt[i * m + b];
+        }
     for (unsigned int a = 0; a < m; ++a)
       compact_matrix.add(
         columns[a], m, columns.data(), &tkt[a * m], false, true);

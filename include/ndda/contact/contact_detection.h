@@ -117,6 +117,84 @@ namespace ndda
     detect(const std::vector<Point<2>>     &vertices,
            const std::vector<BoundaryEdge> &edges,
            const double                     threshold);
+
+    /**
+     * Contact detection that keeps its broad phase from step to step (a
+     * Verlet neighbour list, as particle codes keep theirs): the (vertex,
+     * edge) pairs detect() would test with the detection distance grown by
+     * a skin, sorted by vertex, then edge. A later call reuses them as long
+     * as no boundary vertex has moved more than half the skin since they
+     * were built, less what the detection distance itself has grown, and
+     * only runs the narrow phase (vertex_edge_candidate()) over them: the
+     * candidates are exactly those of detect(), in the same order, without
+     * its R-tree and its sort.
+     *
+     * Why the list stays complete: a candidate (v, e) within the threshold
+     * t now has v on an edge whose box lies within t of e's box along each
+     * axis. The box of an edge whose end points each moved at most m lies
+     * in its old box grown by m, so the two boxes were within t + 2 m at
+     * the build, which the build's reach (its threshold plus the skin)
+     * covers while t + 2 m stays below it.
+     *
+     * The list belongs to one set of boundary edges and one numbering of
+     * the vertices: clear() it when they change (a crack).
+     */
+    class NeighbourList
+    {
+    public:
+      /**
+       * The skin is @p skin_factor times the detection distance of the
+       * call that builds the list.
+       */
+      explicit NeighbourList(const double skin_factor = 1.);
+
+      /** Forget the list: the next detect() builds it. */
+      void
+      clear();
+
+      /** The candidates of detect(vertices, edges, threshold). */
+      std::vector<Candidate>
+      detect(const std::vector<Point<2>>     &vertices,
+             const std::vector<BoundaryEdge> &edges,
+             const double                     threshold);
+
+      /** How often the list was built since construction. */
+      unsigned int
+      n_builds() const
+      {
+        return builds;
+      }
+
+      /** The number of (vertex, edge) pairs in the list. */
+      std::size_t
+      size() const
+      {
+        return tests.size();
+      }
+
+    private:
+      /** True if the list covers distance @p threshold on @p vertices. */
+      bool
+      covers(const std::vector<Point<2>>     &vertices,
+             const std::vector<BoundaryEdge> &edges,
+             const double                     threshold) const;
+
+      void
+      build(const std::vector<Point<2>>     &vertices,
+            const std::vector<BoundaryEdge> &edges,
+            const double                     threshold);
+
+      double skin_factor;
+      /// (vertex, edge), sorted and unique.
+      std::vector<std::pair<unsigned int, unsigned int>> tests;
+      /// The end points of the edges, and where they were at the build.
+      std::vector<unsigned int> boundary_vertices;
+      std::vector<Point<2>>     built_at;
+      /// Threshold plus skin of the build; negative: no list.
+      double       reach   = -1;
+      std::size_t  n_edges = 0, n_vertices = 0;
+      unsigned int builds = 0;
+    };
   } // namespace contact
 } // namespace ndda
 

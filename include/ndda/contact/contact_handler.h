@@ -605,6 +605,8 @@ namespace ndda
       std::vector<double>                    edge_friction;
       std::vector<double>                    vertex_friction;
       std::vector<std::vector<unsigned int>> edges_at_vertex;
+      /// Detection's broad phase, kept while the vertices move little.
+      NeighbourList neighbours;
       /// Mean boundary edge length of every block (m).
       std::vector<double>                                block_edge_length;
       std::vector<ContactPair>                           contacts;

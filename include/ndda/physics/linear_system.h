@@ -254,7 +254,10 @@ namespace ndda
     struct
     {
       std::vector<types::global_dof_index> columns;
-      std::vector<double>                  t, kt, tkt;
+      /// T in sparse rows: the expansion entries of the block's dofs, with
+      /// their positions in columns.
+      std::vector<unsigned int> row_start, position;
+      std::vector<double>       weight, kt, tkt;
     } scratch;
 
     /** The expansion of every dof in compact unknowns (reinit). */
