@@ -4,13 +4,15 @@
 // model (issue 15): staggered dry-stone walls of 1 m x 0.5 m bricks as in
 // prm/brick_wall.prm (half bricks at the ends of every second course, a
 // fixed base, gravity, DDA, dt = 2 ms, penalty 10 E, friction 35 degrees,
-// KLU), with `Control/Kinematics` = meshed, affine and rigid. Walls of
+// KLU unless the third argument names another solver), with
+// `Control/Kinematics` = meshed, affine and rigid. Walls of
 // about 100, 1000 and 10,000 bricks (courses x bricks per course: 12 x 8,
 // 25 x 40, 100 x 100). For each run: blocks, DoFs, the mean and median
 // wall time per step over steps 11 to N, that time per brick, open-close
 // iterations and factorizations per step.
 //
-// Usage: block_models [steps] [largest wall: 1, 2 or 3]   (default 50, 2)
+// Usage: block_models [steps] [largest wall: 1, 2 or 3] [linear solver]
+//        (default 50, 2, KLU)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -33,7 +35,8 @@ namespace
   std::string
   wall(const unsigned int courses,
        const unsigned int length,
-       const std::string &model)
+       const std::string &model,
+       const std::string &solver)
   {
     const double       w = length, h = 0.5 * courses;
     std::ostringstream joints;
@@ -63,7 +66,8 @@ subsection Control
   set Time step       = 2e-3
   set End time        = 10
   set Maximum displacement ratio = 0.01
-  set Linear solver = KLU
+  set Linear solver = )"
+         << solver << R"(
   set Kinematics = )"
          << model << R"(
 end
@@ -122,11 +126,12 @@ end
   run(const unsigned int courses,
       const unsigned int length,
       const std::string &model,
+      const std::string &solver,
       const unsigned int steps)
   {
     dealii::ParameterHandler     prm;
     ndda::parameters::Parameters parameters;
-    parameters.read(wall(courses, length, model), "wall.prm", prm);
+    parameters.read(wall(courses, length, model, solver), "wall.prm", prm);
     ndda::Simulator<2> simulator(parameters);
     simulator.setup();
     const unsigned int  skip = 10;
@@ -172,7 +177,9 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int steps   = argc > 1 ? std::atoi(argv[1]) : 50;
   const unsigned int largest = argc > 2 ? std::atoi(argv[2]) : 2;
-  std::cout << "steps 11 to " << steps + 10 << " of each run" << std::endl;
+  const std::string  solver  = argc > 3 ? argv[3] : "KLU";
+  std::cout << "steps 11 to " << steps + 10 << " of each run, " << solver
+            << std::endl;
   std::cout << std::setw(8) << "model" << std::setw(8) << "bricks"
             << std::setw(9) << "DoFs" << std::setw(11) << "ms/step"
             << std::setw(11) << "median" << std::setw(12) << "us/brick"
@@ -180,5 +187,5 @@ main(int argc, char **argv)
   const unsigned int sizes[3][2] = {{12, 8}, {25, 40}, {100, 100}};
   for (unsigned int s = 0; s < largest && s < 3; ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
-      run(sizes[s][0], sizes[s][1], model, steps);
+      run(sizes[s][0], sizes[s][1], model, solver, steps);
 }
