@@ -9,7 +9,8 @@
 // about 100, 1000 and 10,000 bricks (courses x bricks per course: 12 x 8,
 // 25 x 40, 100 x 100). For each run: blocks, DoFs, the mean and median
 // wall time per step over steps 11 to N, that time per brick, open-close
-// iterations and factorizations per step.
+// iterations of the accepted attempt, step cuts (each cut retries the
+// step with its own iterations) and factorizations per step.
 //
 // Usage: block_models [steps] [largest wall: 1, 2 or 3] [linear solver]
 //        (default 50, 2, KLU)
@@ -136,7 +137,7 @@ end
     simulator.setup();
     const unsigned int  skip = 10;
     std::vector<double> times;
-    unsigned int        iterations = 0, factorizations = 0;
+    unsigned int        iterations = 0, factorizations = 0, cuts = 0;
     for (unsigned int s = 0; s < steps + skip; ++s)
       {
         if (s == skip)
@@ -149,6 +150,7 @@ end
                           std::chrono::steady_clock::now() - start)
                           .count());
         iterations += simulator.get_contacts().get_statistics().n_iterations;
+        cuts += simulator.get_step_report().cuts;
       }
     double total = 0;
     for (const double t : times)
@@ -163,6 +165,7 @@ end
               << 1e3 * sorted[sorted.size() / 2] << std::setw(12)
               << 1e3 * mean / bricks << std::setprecision(2) << std::setw(8)
               << double(iterations) / times.size() << std::setw(8)
+              << double(cuts) / times.size() << std::setw(8)
               << double(simulator.n_factorizations() - factorizations) /
                    times.size()
               << std::defaultfloat << std::endl;
@@ -183,7 +186,8 @@ main(int argc, char **argv)
   std::cout << std::setw(8) << "model" << std::setw(8) << "bricks"
             << std::setw(9) << "DoFs" << std::setw(11) << "ms/step"
             << std::setw(11) << "median" << std::setw(12) << "us/brick"
-            << std::setw(8) << "o-c it" << std::setw(8) << "fact." << std::endl;
+            << std::setw(8) << "o-c it" << std::setw(8) << "cuts"
+            << std::setw(8) << "fact." << std::endl;
   const unsigned int sizes[3][2] = {{12, 8}, {25, 40}, {100, 100}};
   for (unsigned int s = 0; s < largest && s < 3; ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})

@@ -20,8 +20,9 @@ import collections
 import re
 import sys
 
+# model, bricks, DoFs, ms/step, median, us/brick, then the counts per step
 ROW = re.compile(r"^\s*(meshed|affine|rigid)\s+(\d+)\s+(\d+)\s+([\d.]+)"
-                 r"\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)\s*$")
+                 r"\s+([\d.]+)\s+([\d.]+)(\s+[\d.]+)+\s*$")
 STYLE = {"meshed": ("o-", "tab:blue"), "affine": ("s-", "tab:orange"),
          "rigid": ("^-", "tab:green")}
 
