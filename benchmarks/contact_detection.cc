@@ -14,7 +14,8 @@
 // (about the wall's motion per step against its detection distance), and
 // every step calls detect() and a contact::NeighbourList's detect(), in
 // turns (which one goes first alternates). It prints the mean time of
-// each per step, their ratio and the list's builds.
+// each per step, their ratio, the list's builds, the (vertex, edge) pairs
+// the list tests every step and the candidates of the last step.
 //
 // Usage: contact_detection [max_edges]   (default 1e6)
 
@@ -87,7 +88,8 @@ namespace
     std::uniform_real_distribution<double> motion(-1e-4, 1e-4);
     contact::NeighbourList                 list;
     double                                 fresh_time = 0, list_time = 0;
-    bool                                   same = true;
+    bool                                   same         = true;
+    std::size_t                            n_candidates = 0;
     for (unsigned int step = 0; step < n_steps; ++step)
       {
         for (auto &v : mesh.vertices)
@@ -107,12 +109,14 @@ namespace
                 list_time += seconds_since(start);
               }
           }
-        same = same && fresh.size() == listed.size();
+        same         = same && fresh.size() == listed.size();
+        n_candidates = listed.size();
       }
     std::cout << std::setw(9) << edges.size() << std::setw(14)
               << std::setprecision(4) << 1e3 * fresh_time / n_steps
               << std::setw(14) << 1e3 * list_time / n_steps << std::setw(10)
               << fresh_time / list_time << std::setw(9) << list.n_builds()
+              << std::setw(10) << list.size() << std::setw(12) << n_candidates
               << std::setw(7) << (same ? "yes" : "NO") << std::endl;
   }
 } // namespace
@@ -172,7 +176,9 @@ main(int argc, char **argv)
   std::cout << "\n50 steps of motion (up to 1e-4 per step and direction)\n"
             << std::setw(9) << "n_edges" << std::setw(14) << "detect[ms]"
             << std::setw(14) << "list[ms]" << std::setw(10) << "ratio"
-            << std::setw(9) << "builds" << std::setw(7) << "same" << std::endl;
+            << std::setw(9) << "builds" << std::setw(10) << "pairs"
+            << std::setw(12) << "candidates" << std::setw(7) << "same"
+            << std::endl;
   for (const double target : {1e4, 1e5})
     if (target <= max_edges)
       time_stepping(target, gap, threshold, 50);
