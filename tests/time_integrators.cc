@@ -365,6 +365,39 @@ end
             crawl.find(": 1000 steps in a row were cut") != std::string::npos,
           "message of the crawl guard");
   }
+
+
+
+  void
+  test_step_hold()
+  {
+    StepController::Limits limits;
+    limits.nominal_step              = 0.1;
+    limits.end_time                  = 0.35;
+    limits.max_cuts                  = 3;
+    limits.max_displacement_ratio    = 0.01;
+    limits.max_open_close_iterations = 6;
+    // A motion that needs half the step for a while: every growth back
+    // to the full step fails (one cut), and the size is held for 1, 2,
+    // 4, ... accepted steps before the next try; a growth that holds
+    // lets the next cut grow back at once.
+    StepController     held(limits);
+    std::ostringstream attempts;
+    const double       t = 0;
+    for (unsigned int step = 1; step <= 16; ++step)
+      {
+        held.begin_step(step, t);
+        double dt = held.attempt_size(t);
+        attempts << ' ' << dt;
+        if (dt > 0.06 && step < 12)
+          dt = held.after_failure(AttemptResult::not_settled, dt, 1.);
+        held.accept(dt);
+      }
+    std::cout << "  held after failed growth:" << attempts.str() << std::endl;
+    check(attempts.str() == " 0.1 0.1 0.05 0.1 0.05 0.05 0.1 0.05 0.05 0.05 "
+                            "0.05 0.1 0.1 0.1 0.1 0.1",
+          "a failed growth holds the size longer");
+  }
 } // namespace
 
 
@@ -377,6 +410,7 @@ main()
   test_oscillator();
   test_registry();
   test_step_controller();
+  test_step_hold();
   std::cout << "OK" << std::endl;
   return 0;
 }

@@ -62,8 +62,9 @@ namespace ndda
         "With UMFPACK or KLU: a system whose contact springs changed is first "
         "solved by GMRES preconditioned with the last factorization, and "
         "factorized anew only if GMRES needs more than this many "
-        "iterations (the result is the same to a relative residual of "
-        "1e-12). 0: factorize every changed system.");
+        "iterations, or more than a factorization costs in iterations "
+        "where that is more (at most 100; the result is the same to a "
+        "relative residual of 1e-12). 0: factorize every changed system.");
       prm.declare_entry("Vertex-vertex method",
                         "revised",
                         Patterns::Selection("revised|shortest path"),

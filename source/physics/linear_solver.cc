@@ -14,6 +14,7 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
+#include <cmath>
 #include <suitesparse/klu.h>
 #include <suitesparse/umfpack.h>
 
@@ -141,7 +142,14 @@ namespace ndda
           umfpack_dl_numeric(
             ap.data(), ai.data(), ax.data(), symbolic, &numeric, control, info),
           "numeric factorization");
+        solve_ratio =
+          info[UMFPACK_FLOPS] /
+          (2. * (info[UMFPACK_LNZ] + info[UMFPACK_UNZ] + ai.size()));
       }
+
+      /** The cost of the last factorization in solves (see
+       * LinearSolver::solves_per_factorization()). */
+      double solve_ratio = 0;
 
       void
       solve(Vector<double> &x, const Vector<double> &b)
@@ -242,7 +250,16 @@ namespace ndda
         numeric = klu_l_factor(
           rows.ap.data(), rows.ai.data(), rows.ax.data(), symbolic, &common);
         check(numeric != nullptr, "factorization");
+        // The flops of the factorization depend on the pivot order alone,
+        // which a refactorization keeps.
+        check(klu_l_flops(symbolic, numeric, &common), "flop count");
+        solve_ratio = common.flops / (2. * (numeric->lnz + numeric->unz +
+                                            numeric->nzoff + rows.ai.size()));
       }
+
+      /** The cost of the last factorization in solves (see
+       * LinearSolver::solves_per_factorization()). */
+      double solve_ratio = 0;
 
       void
       solve(Vector<double> &x, const Vector<double> &b)
@@ -400,18 +417,87 @@ namespace ndda
 
 
 
+  double
+  LinearSolver::solves_per_factorization() const
+  {
+    if (type == parameters::LinearSolverType::umfpack)
+      return implementation->umfpack.solve_ratio;
+    if (type == parameters::LinearSolverType::klu)
+      return implementation->klu.solve_ratio;
+    return 0;
+  }
+
+
+
+  namespace
+  {
+    /**
+     * GMRES's control with an earlier factorization: it fails at
+     * @p max_steps iterations, and after @p sure_steps iterations also as
+     * soon as the reduction of the residual so far, extrapolated at its
+     * mean rate, would not reach the tolerance within @p max_steps: such
+     * a solve costs more than the factorization it was to save.
+     */
+    class ReuseControl : public SolverControl
+    {
+    public:
+      ReuseControl(const unsigned int max_steps,
+                   const unsigned int sure_steps,
+                   const double       tolerance,
+                   const double       initial)
+        : SolverControl(max_steps, tolerance * initial, false, false)
+        , sure_steps(sure_steps)
+        , initial(initial)
+        , log_target(std::log(tolerance))
+      {}
+
+      State
+      check(const unsigned int step, const double value) override
+      {
+        const State state = SolverControl::check(step, value);
+        if (state != iterate || step < sure_steps)
+          return state;
+        const double log_reduction = std::log(value / initial);
+        if (!(log_reduction < 0.) ||
+            step * log_target / log_reduction > max_steps())
+          {
+            lcheck = failure;
+            return failure;
+          }
+        return state;
+      }
+
+    private:
+      const unsigned int sure_steps;
+      const double       initial, log_target;
+    };
+  } // namespace
+
+
+
+  unsigned int
+  LinearSolver::reuse_limit(const unsigned int min_iterations) const
+  {
+    // As many iterations as the factorization costs, at most 100.
+    return std::max(min_iterations,
+                    static_cast<unsigned int>(
+                      std::min(100., solves_per_factorization())));
+  }
+
+
+
   unsigned int
   LinearSolver::solve_with_earlier_factorization(
     const SparseMatrix<double> &matrix,
     Vector<double>             &x,
     const Vector<double>       &b,
-    const unsigned int          max_iterations,
+    const unsigned int          min_iterations,
     const double                tolerance)
   {
     const auto &impl    = *implementation;
     const bool  umfpack = type == parameters::LinearSolverType::umfpack;
     const auto  n       = static_cast<SuiteSparse_long>(matrix.m());
-    if (max_iterations == 0 ||
+    if (min_iterations == 0 ||
         !(umfpack ?
             impl.umfpack.size() == n :
             type == parameters::LinearSolverType::klu && impl.klu.size() == n))
@@ -420,8 +506,9 @@ namespace ndda
     const double norm = b.l2_norm();
     if (norm == 0.)
       return 1;
+    const unsigned int max_iterations = reuse_limit(min_iterations);
     // Right preconditioning: GMRES then watches the true residual.
-    SolverControl control(max_iterations, tolerance * norm, false, false);
+    ReuseControl control(max_iterations, min_iterations, tolerance, norm);
     SolverGMRES<Vector<double>> gmres(
       control,
       SolverGMRES<Vector<double>>::AdditionalData(max_iterations + 2, true));

@@ -479,7 +479,7 @@ namespace ndda
         base_factorized = !springs;
         iterations      = compact_solve(b, d, true, 0);
       }
-    else if (2 * iterations > reuse_iterations)
+    else if (2 * iterations > linear_solver->reuse_limit(reuse_iterations))
       // Converging slowly: the factorization has aged.
       refactorize_next = true;
     return iterations;

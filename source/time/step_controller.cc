@@ -24,6 +24,8 @@ namespace ndda
       constexpr double crawling_step = 1e-3;
       /// ... and this many of them in a row stop the run.
       constexpr unsigned int max_crawling_steps = 1000;
+      /// Most accepted steps a size is held after a failed growth.
+      constexpr unsigned int max_hold = 32;
     } // namespace
 
 
@@ -124,8 +126,17 @@ namespace ndda
     {
       total_cuts += cuts;
       last_dt = dt;
-      // After a cut, grow back towards the nominal step.
-      step_size = std::min(2. * dt, limits.nominal_step);
+      // After a cut, grow back towards the nominal step: at once, unless
+      // growing has just failed. Every grown attempt that fails again
+      // doubles the steps the size is held before the next try (at most
+      // max_hold); one that holds lets the next cut grow at once again.
+      // A scene that needs a smaller step for a while then pays a failed
+      // attempt every max_hold steps rather than one in every step.
+      if (growing)
+        hold = cuts > 0 ? std::min(std::max(2 * hold, 1u), max_hold) : 0;
+      held      = cuts > 0 ? 0 : held + 1;
+      step_size = held >= hold ? std::min(2. * dt, limits.nominal_step) : dt;
+      growing   = step_size > dt;
       crawling_steps =
         dt < crawling_step * limits.nominal_step ? crawling_steps + 1 : 0;
     }

@@ -28,7 +28,8 @@ namespace ndda
   class LinearSolver
   {
   public:
-    LinearSolver(const parameters::LinearSolverType type, const double tolerance);
+    LinearSolver(const parameters::LinearSolverType type,
+                 const double                       tolerance);
     ~LinearSolver();
 
     /**
@@ -54,7 +55,7 @@ namespace ndda
 
     /**
      * Solve matrix * x = b with GMRES, preconditioned by the factorization
-     * of an earlier matrix of the same size (UMFPACK only). Meant for the
+     * of an earlier matrix of the same size (UMFPACK or KLU). Meant for the
      * open-close iteration, where the matrix of one iteration differs from
      * the factorized one by a few contact springs, or by small changes of
      * the contact geometry from step to step: a preconditioner that is
@@ -62,17 +63,41 @@ namespace ndda
      * iterations, each one triangular solve and one product with the
      * matrix, instead of a new factorization.
      *
+     * GMRES may take @p min_iterations iterations, or more where a
+     * factorization costs more (solves_per_factorization(), at most 100);
+     * beyond @p min_iterations it gives up as soon as its residual,
+     * reduced at its mean rate so far, would not reach the tolerance
+     * within them.
+     *
      * Returns the number of GMRES iterations, or 0 if there is no such
      * factorization or GMRES did not reduce the residual to @p tolerance
-     * times |b| within @p max_iterations; x is then undefined, and the
+     * times |b| within its iterations; x is then undefined, and the
      * caller factorizes the matrix instead.
      */
     unsigned int
     solve_with_earlier_factorization(const SparseMatrix<double> &matrix,
                                      Vector<double>             &x,
                                      const Vector<double>       &b,
-                                     const unsigned int          max_iterations,
+                                     const unsigned int          min_iterations,
                                      const double                tolerance);
+
+    /**
+     * The cost of the last factorization (UMFPACK, KLU) against that of
+     * one iteration with it: its floating point operations over those of
+     * one solve with the factors and one product with the matrix. 0 for
+     * CG-AMG or before the first factorization. It depends on the
+     * sparsity pattern and pivot order alone.
+     */
+    double
+    solves_per_factorization() const;
+
+    /**
+     * The most GMRES iterations solve_with_earlier_factorization() takes
+     * with at least @p min_iterations: solves_per_factorization(), at
+     * most 100.
+     */
+    unsigned int
+    reuse_limit(const unsigned int min_iterations) const;
 
     /** Number of factorizations so far. */
     unsigned int
@@ -83,11 +108,11 @@ namespace ndda
 
   private:
     struct Implementation;
-    const parameters::LinearSolverType  type;
-    const double                    tolerance;
-    std::unique_ptr<Implementation> implementation;
-    std::vector<double>             rigid_body_modes;
-    unsigned int                    factorization_count = 0;
+    const parameters::LinearSolverType type;
+    const double                       tolerance;
+    std::unique_ptr<Implementation>    implementation;
+    std::vector<double>                rigid_body_modes;
+    unsigned int                       factorization_count = 0;
   };
 } // namespace ndda
 

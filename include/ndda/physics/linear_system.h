@@ -131,7 +131,9 @@ namespace ndda
      * (if not empty) adds the springs S, s; @p prescribed holds the
      * prescribed increments of constrained dofs (exact constraints).
      * A changed system is first solved by GMRES with the last
-     * factorization, at most @p reuse_iterations iterations (0: never).
+     * factorization, with up to @p reuse_iterations iterations or as many
+     * as a factorization costs where that is more
+     * (LinearSolver::reuse_limit(); 0: never).
      * Returns the iterations of the solve: GMRES's with the earlier
      * factorization, else the linear solver's (1 for a direct solver).
      *

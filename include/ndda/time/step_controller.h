@@ -28,7 +28,9 @@ namespace ndda
      * 3.11; ASPECT's time stepping manager plays the same part there):
      *
      * - an attempt starts at the nominal step, or at what is left to the
-     *   end time, or at twice the last accepted step after a cut;
+     *   end time, or at twice the last accepted step after a cut; where
+     *   that growth fails again, the size is held for 1, 2, 4, ... up to
+     *   32 accepted steps before the next try (until a growth holds);
      * - a failed attempt is cut to half its size, up to a limit of cuts in
      *   one step; a raised contact penalty retries the same size, up to 30
      *   raises;
@@ -90,7 +92,8 @@ namespace ndda
 
       /**
        * The step was accepted with size @p dt: the next step starts at
-       * twice that, at most the nominal step.
+       * twice that, at most the nominal step, or at @p dt while a failed
+       * growth holds it (see the class's description).
        */
       void
       accept(const double dt);
@@ -146,6 +149,12 @@ namespace ndda
       unsigned int raises          = 0;
       unsigned int total_cuts      = 0;
       unsigned int crawling_steps  = 0;
+      /// Accepted steps to hold a size after a cut before growing (0: at
+      /// once), those held so far, and whether the present step size is
+      /// a growth that has not yet held.
+      unsigned int hold    = 0;
+      unsigned int held    = 0;
+      bool         growing = false;
     };
   } // namespace time
 } // namespace ndda
