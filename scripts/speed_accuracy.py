@@ -1,13 +1,15 @@
 #!/usr/bin/python3
 """Speed against accuracy: error against CPU time of ndda over its settings.
 
-For three validation cases the script runs ndda over a sweep of settings,
-computes each run's error against the analytical reference from the files
-ndda writes (exactly as the C++ test of the case measures it), and the
-run's time; it writes one PNG per case (error against time, log-log, the
-Pareto front drawn and labelled), a CSV of all runs and a markdown
-fragment (the error measures and references, a table of all runs, and the
-Pareto front in words, everything from this run's data).
+For five validation cases the script runs ndda over a sweep of settings,
+computes each run's error from the files ndda writes (exactly as the C++
+test of the case measures it) against the analytical reference or, where
+the test has none, against the case's finest meshed run, and the run's
+time; it writes one PNG per case (error against time, log-log, the Pareto
+front drawn and labelled), a CSV of all runs and a markdown fragment (the
+error measures and references, a table of all runs, the Pareto front in
+words and, where the block model is swept, each model's errors, place on
+the front and time against meshed, everything from this run's data).
 
 - elastic_bar_wave (tests/elastic_bar_wave.cc): the thesis's bar, a 1 MPa
   sin^2 pulse of 40 us; wave speed from the centroids in time of the
@@ -21,17 +23,35 @@ Pareto front in words, everything from this run's data).
   factor x integrator.
 - brazilian_disc (tests/brazilian_disc.cc): the disc between two plates
   with fracture switched off, to 1.5 ms (before the first crack at about
-  2.1 ms); the centre's sigma_xx against 2 P / (pi D t), P from the top
-  plate's stresses in the VTU files by the mean stress theorem; the
-  largest error from 20 % of the load on (the test's measure) and the
-  error at the end time. Sweep: mesh size x element degree.
+  2.1 ms); the centre's sigma_xx against 2 P / (pi D t), P the top
+  plate's contact force ('block forces' statistics); the largest error
+  from 20 % of the load on (the test's measure) and the error at the end
+  time. Sweep: mesh size x element degree with the scene's rigid plates,
+  and affine and meshed plates (the plates' block model; the disc stays
+  meshed) on five of those (DISC_MODEL_RUNS).
+- brick_wall (tests/stacks_stay_still.cc): 102 bricks on a rigid base
+  settling under gravity, to 0.5 s (the test: 1 s; at rest long before).
+  The test has bounds only (drift, speed), no reference value: the
+  settlement of the top corners (measure points) at the end and its
+  largest value over the run against the finest meshed run of the sweep
+  (h = 0.25 m, dt = 0.5 ms); drift and speed in the table. Sweep: block
+  model of the bricks (rigid, affine, meshed, auto; the base stays rigid)
+  x time step (2, 1, 0.5 ms), meshed bricks also at h = 0.5 and 0.25 m.
+  The rock has no fracture, so auto bricks stay affine.
+- wall_impact (tests/automatic_kinematics.cc): a boulder strikes 198
+  bricks, 0.3 s as the scene and the test; every block's centroid at the
+  end against the meshed run of the smallest step (0.5 ms) and, as the
+  test pairs them, against the meshed run of the same step, in % of the
+  scene's size (target 1 %, issue 15). Sweep: block model of every block
+  but the rigid base x time step (2, 1, 0.5 ms).
 
 Time: the sum of the statistics file's 'Wall time per step (s)' (the time
 stepping only: no start-up, meshing or output); runs under --repeat-below
 seconds are run twice more and the smallest time is taken (the machine is
 shared: the least disturbed run). The process's wall and CPU time are in
-the CSV too. One ndda process at a time. The full sweep takes about 15
-minutes on two cores; --quick about half a minute.
+the CSV too. One ndda process at a time. The full sweep takes about 18
+minutes on two cores (the bar and the block 8-9, the disc 2-3, the brick
+wall 3, the wall impact 4); --quick about a minute.
 
 Pareto front: the runs that no cheaper run beats on the error, cheapest
 first; a run joins only if it cuts the error by 5 % or more (FRONT_GAIN).
@@ -46,7 +66,8 @@ Run it with Debian's Python (python3-numpy, python3-matplotlib):
     /usr/bin/python3 scripts/speed_accuracy.py --ndda build/ndda \\
         --prm-dir prm --out-dir doc/speed_accuracy \\
         --markdown doc/speed_accuracy/speed_accuracy.md
-    ... --quick     # 2-3 runs per case, to check that the script works
+    ... --quick     # 2-4 runs per case, to check that the script works
+    ... --cases brick_wall,wall_impact   # some of the cases only
 """
 
 import argparse
@@ -70,13 +91,26 @@ sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ndda_output  # noqa: E402
 
-CASES = ("elastic_bar_wave", "sliding_block", "brazilian_disc")
+CASES = ("elastic_bar_wave", "sliding_block", "brazilian_disc", "brick_wall", "wall_impact")
+# The block kinematics models (Control/Kinematics and a block's own entry).
+MODELS = ("rigid", "affine", "meshed", "auto")
 
 BAR_END = 3e-4  # end time of the bar, as the test
 BAR_POINTS = (0.25, 0.5, 0.97)  # x of the bar's measure points, as the test
 DISC_END = 1.5e-3  # end time of the disc: before its first crack
 DISC_INTERVAL = 1e-4  # VTU frames of the disc, for the plate force
 DISC_FROM = 0.2  # the disc's error from this fraction of the last load on
+# (mesh size, degree) of the disc runs with affine and meshed plates: a
+# subset of the rigid plates' sweep, coarse to fine.
+DISC_MODEL_RUNS = ((0.004, 1), (0.004, 2), (0.0022, 1), (0.0022, 2), (0.0011, 1))
+# End time of the brick wall: the test runs 1 s; the top has settled to four
+# digits from 0.3 s on (meshed, h = 0.25 m, dt = 0.5 ms, the least damped).
+WALL_END = 0.5
+WALL_MESH = 2.0  # the wall's mesh size in prm/brick_wall.prm (two cells a brick)
+IMPACT_END = 0.3  # end time of the wall impact, as the scene and the test
+# The target of issue 15 and tests/automatic_kinematics.cc: final block
+# centroids within 1 % of the scene's size of the all-meshed run's.
+IMPACT_TARGET = 0.01
 # Targets of tests/elastic_bar_wave.cc for Newmark: wave speed and peak
 # particle velocity.
 BAR_TARGETS = dict(speed_error=0.01, peak_error=0.03)
@@ -87,6 +121,7 @@ FRONT_GAIN = 0.05
 # Settings of a run: (key, column name in the CSV and tables).
 SETTING_NAMES = collections.OrderedDict(
     [
+        ("model", "block model"),
         ("mesh_size", "mesh size (m)"),
         ("time_step", "time step (s)"),
         ("degree", "element degree"),
@@ -144,9 +179,41 @@ def sliding_runs(quick):
 
 
 def disc_runs(quick):
-    """Settings of the Brazilian disc runs."""
-    sizes = (0.004,) if quick else (0.004, 0.003, 0.0022, 0.0015, 0.0011)
-    return [dict(mesh_size=h, degree=p) for h in sizes for p in (1, 2)]
+    """Settings of the Brazilian disc runs: every mesh size and degree with
+    the scene's rigid plates, and a subset with affine and meshed plates."""
+    if quick:
+        return [dict(mesh_size=0.004, degree=p, model="rigid") for p in (1, 2)] + [
+            dict(mesh_size=0.004, degree=1, model=m) for m in ("affine", "meshed")
+        ]
+    sizes = (0.004, 0.003, 0.0022, 0.0015, 0.0011)
+    runs = [dict(mesh_size=h, degree=p, model="rigid") for h in sizes for p in (1, 2)]
+    runs += [
+        dict(mesh_size=h, degree=p, model=m)
+        for m in ("affine", "meshed")
+        for h, p in DISC_MODEL_RUNS
+    ]
+    return runs
+
+
+def brick_wall_runs(quick):
+    """Settings of the brick wall runs: every model at the scene's mesh over
+    three steps; meshed bricks also on two finer meshes (the finest meshed
+    run is the reference)."""
+    if quick:
+        return [dict(mesh_size=WALL_MESH, time_step=2e-3, model=m)
+                for m in ("rigid", "affine", "meshed")]
+    steps = (2e-3, 1e-3, 5e-4)
+    runs = [dict(mesh_size=WALL_MESH, time_step=dt, model=m) for m in MODELS for dt in steps]
+    runs += [dict(mesh_size=h, time_step=dt, model="meshed") for h in (0.5, 0.25) for dt in steps]
+    return runs
+
+
+def wall_impact_runs(quick):
+    """Settings of the wall impact runs: every model over three steps (the
+    meshed run of the smallest step is the reference)."""
+    if quick:
+        return [dict(time_step=2e-3, model=m) for m in ("rigid", "meshed")]
+    return [dict(time_step=dt, model=m) for dt in (2e-3, 1e-3, 5e-4) for m in MODELS]
 
 
 # --------------------------------------------------------------------------
@@ -162,57 +229,110 @@ def overrides(case, settings):
         control.append(f"  set Element degree = {settings['degree']}")
     if "integrator" in settings:
         control.append(f"  set Time integrator = {settings['integrator']}")
-    text = []
-    if case == "elastic_bar_wave":
-        # As tests/elastic_bar_wave.cc: to 0.3 ms, points at 0.25, 0.5, 0.97 m.
-        control.append(f"  set End time = {BAR_END:g}")
-        text += control + ["end"]
-        text += [
-            "subsection Geometry",
-            "  subsection bar",
-            f"    set Mesh size = {settings['mesh_size']:g}",
-            "  end",
-            "end",
-            "subsection Output",
-            "  set Write vtu = false",
-            "  set Measure points = " + "; ".join(f"{x:g}, 0.015" for x in BAR_POINTS),
-            "end",
-        ]
-    elif case == "sliding_block":
-        # As tests/sliding_block.cc: penetration tolerance 1e-3 of half the
-        # scene's height.
-        text += control + ["end"]
-        text += [
-            "subsection Contact",
-            f"  set Penalty factor = {settings['penalty']:g}",
-            "  set Maximum penetration ratio = 1e-3",
-            "end",
-            "subsection Output",
-            "  set Write vtu = false",
-            "end",
-        ]
-    elif case == "brazilian_disc":
-        # Before the first crack only: no fracture, to 1.5 ms; VTU frames
-        # every 0.1 ms give the plate force.
-        control.append(f"  set End time = {DISC_END:g}")
-        text += control + ["end"]
-        text += [
-            "subsection Materials",
-            "  subsection rock",
-            "    set Fracture = false",
-            "  end",
-            "end",
-            "subsection Geometry",
-            "  subsection disc",
-            f"    set Mesh size = {settings['mesh_size']:g}",
-            "  end",
-            "end",
-            "subsection Output",
-            "  set Write vtu = true",
-            f"  set Interval = {DISC_INTERVAL:g}",
-            "end",
-        ]
+    if "model" in settings and case != "brazilian_disc":
+        # The scene's default: every block without its own Kinematics entry
+        # (the rigid base keeps its own).
+        control.append(f"  set Kinematics = {settings['model']}")
+    if case in CASE_END_TIMES:
+        control.append(f"  set End time = {CASE_END_TIMES[case]:g}")
+    text = control + ["end"] + CASE_OVERRIDES[case](settings)
     return "\n".join(text) + "\n"
+
+
+def bar_overrides(settings):
+    """As tests/elastic_bar_wave.cc: to 0.3 ms, points at 0.25, 0.5, 0.97 m."""
+    return [
+        "subsection Geometry",
+        "  subsection bar",
+        f"    set Mesh size = {settings['mesh_size']:g}",
+        "  end",
+        "end",
+        "subsection Output",
+        "  set Write vtu = false",
+        "  set Measure points = " + "; ".join(f"{x:g}, 0.015" for x in BAR_POINTS),
+        "end",
+    ]
+
+
+def sliding_overrides(settings):
+    """As tests/sliding_block.cc: penetration tolerance 1e-3 of half the
+    scene's height."""
+    return [
+        "subsection Contact",
+        f"  set Penalty factor = {settings['penalty']:g}",
+        "  set Maximum penetration ratio = 1e-3",
+        "end",
+        "subsection Output",
+        "  set Write vtu = false",
+        "end",
+    ]
+
+
+def disc_overrides(settings):
+    """Before the first crack only: no fracture, to 1.5 ms; VTU frames every
+    0.1 ms give the times of the plate force; the plates' model."""
+    plates = []
+    if "model" in settings:
+        for plate in ("top", "bottom"):
+            plates += [f"  subsection {plate}", f"    set Kinematics = {settings['model']}",
+                       "  end"]
+    return [
+        "subsection Materials",
+        "  subsection rock",
+        "    set Fracture = false",
+        "  end",
+        "end",
+        "subsection Geometry",
+        "  subsection disc",
+        f"    set Mesh size = {settings['mesh_size']:g}",
+        "  end",
+    ] + plates + [
+        "end",
+        "subsection Output",
+        "  set Write vtu = true",
+        f"  set Interval = {DISC_INTERVAL:g}",
+        "end",
+    ]
+
+
+def brick_wall_overrides(settings):
+    """The bricks' mesh size (the region 'wall'); the top corners' measure
+    points of the scene; no VTU files."""
+    return [
+        "subsection Geometry",
+        "  subsection wall",
+        f"    set Mesh size = {settings['mesh_size']:g}",
+        "  end",
+        "end",
+        "subsection Output",
+        "  set Write vtu = false",
+        "end",
+    ]
+
+
+def wall_impact_overrides(settings):
+    """VTU frames at the start and the end only: the blocks' centroids."""
+    return [
+        "subsection Output",
+        "  set Write vtu = true",
+        f"  set Interval = {IMPACT_END:g}",
+        "end",
+    ]
+
+
+CASE_END_TIMES = {
+    "elastic_bar_wave": BAR_END,
+    "brazilian_disc": DISC_END,
+    "brick_wall": WALL_END,
+    "wall_impact": IMPACT_END,
+}
+CASE_OVERRIDES = {
+    "elastic_bar_wave": bar_overrides,
+    "sliding_block": sliding_overrides,
+    "brazilian_disc": disc_overrides,
+    "brick_wall": brick_wall_overrides,
+    "wall_impact": wall_impact_overrides,
+}
 
 
 # The .prm reader and the polygon parser live in ndda_output.py (shared
@@ -461,6 +581,7 @@ class Disc:
             raise RuntimeError("the disc scene has no blocks 'top' and 'bottom'")
         self.integrator = parameters["Control/Time integrator"]
         self.time_step = float(parameters["Control/Time step"])
+        self.plate_mesh = float(parameters["Geometry/top/Mesh size"])
 
     def evaluate(self, out_dir):
         m = ndda_output.read_table(os.path.join(out_dir, "measure_points.txt"))
@@ -500,11 +621,188 @@ class Disc:
         )
 
 
-CASE_CLASSES = {"elastic_bar_wave": Bar, "sliding_block": SlidingBlock, "brazilian_disc": Disc}
+def reference_run(runs):
+    """The reference run of a case measured against its own best run: the
+    meshed run with the smallest mesh size, then the smallest step."""
+    meshed = [r for r in runs if r.get("ok") and r["settings"].get("model") == "meshed"]
+    if not meshed:
+        return None
+    return min(meshed, key=lambda r: (r["settings"].get("mesh_size", 0.0),
+                                      r["settings"].get("time_step", 0.0)))
+
+
+def kinematics_statistics(out_dir):
+    """Step cuts, open-close iterations per step, promotions and the most
+    blocks meshed at once, from the statistics file."""
+    s = ndda_output.read_table(os.path.join(out_dir, "statistics"))
+    return dict(
+        step_cuts=int(np.sum(s["Step cuts"])),
+        open_close_per_step=float(np.mean(s["Open-close iterations"])),
+        promotions=int(s["Promotions"][-1]) if "Promotions" in s else 0,
+        most_meshed=int(np.max(s["Blocks meshed"])) if "Blocks meshed" in s else 0,
+    )
+
+
+class BrickWall:
+    """The 102-brick wall settling under gravity: the top corners against
+    the finest meshed run of the sweep (the test has no reference value)."""
+
+    name = "brick_wall"
+    title = "Brick wall settling under gravity (tests/stacks_stay_still.cc)"
+    measures = [
+        ("error", "settlement error at the end |s / s_ref - 1|"),
+        ("peak_settlement_error", "largest settlement error |s_max / s_max,ref - 1|"),
+    ]
+    targets = {}
+
+    def __init__(self, parameters):
+        wall = points_of(parameters["Geometry/wall/Outer boundary"])
+        self.width = wall[:, 0].max() - wall[:, 0].min()
+        self.height = wall[:, 1].max() - wall[:, 1].min()
+        self.points = points_of(parameters["Output/Measure points"])
+        if len(self.points) != 2 or np.any(self.points[:, 1] < wall[:, 1].max() - 0.5):
+            raise RuntimeError("the wall's measure points are not two points of its top course")
+        self.rho = float(parameters["Materials/rock/Density"])
+        self.E = float(parameters["Materials/rock/Young's modulus"])
+        nu = float(parameters["Materials/rock/Poisson's ratio"])
+        self.plane = parameters.get("Materials/Plane condition", "plane stress")
+        self.g = math.hypot(*[float(v) for v in parameters["Loads/Gravity"].split(";")])
+        # A jointless column of the wall's height under its own weight,
+        # uniaxial: its top settles by rho g H^2 / (2 E') (E' = E in plane
+        # stress, E / (1 - nu^2) in plane strain).
+        factor = 1.0 if self.plane == "plane stress" else 1.0 - nu**2
+        self.column = factor * self.rho * self.g * self.height**2 / (2 * self.E)
+        self.end_time = float(parameters["Control/End time"])
+
+    def evaluate(self, out_dir):
+        m = ndda_output.read_table(os.path.join(out_dir, "measure_points.txt"))
+        if abs(m["time"][-1] - self.end_time) > 1e-9:
+            raise RuntimeError(f"the last row is at t = {m['time'][-1]:g} s")
+        settlement = -0.5 * (m["point 0 u_y"] + m["point 1 u_y"])
+        result = dict(
+            settlement=float(settlement[-1]),
+            peak_settlement=float(np.max(settlement)),
+            # The test's drift and speed, over the two top corners.
+            # How far the top still moves over the last 40 % of the run.
+            late_change=float(np.max(np.abs(settlement[m["time"] >= 0.6 * self.end_time]
+                                            - settlement[-1]))),
+            drift=float(max(np.max(np.abs(m[f"point {p} u_x"])) for p in (0, 1))),
+            max_speed=float(max(np.max(np.abs(m[f"point {p} {c}"]))
+                                for p in (0, 1) for c in ("v_x", "v_y"))),
+        )
+        result.update(kinematics_statistics(out_dir))
+        return result
+
+    def finish(self, runs):
+        """The errors against the reference run, once all runs are done."""
+        reference = reference_run(runs)
+        for r in runs:
+            if not r.get("ok"):
+                continue
+            r["is_reference"] = int(r is reference)
+            for key, measure in (("settlement", "error"),
+                                 ("peak_settlement", "peak_settlement_error")):
+                signed = (r[key] / reference[key] - 1
+                          if reference is not None and r is not reference else math.nan)
+                r[measure + "_signed"] = signed
+                r[measure] = abs(signed)
+
+
+def block_centroids(vtu):
+    """(block ids, area-weighted centroids) of a VTU frame's blocks on its
+    (deformed) mesh, as block_centroids() of tests/automatic_kinematics.cc."""
+    corners = ndda_output.cell_corners(vtu)
+    area = np.abs(ndda_output.cell_areas(vtu, corners))
+    block = ndda_output.cell_block_ids(vtu, corners)
+    middle = vtu.points[corners][:, :, :2].mean(axis=1)
+    ids = np.unique(block)
+    n = ids.max() + 1
+    total = np.bincount(block, area, n)
+    centroid = np.stack([np.bincount(block, area * middle[:, k], n) for k in (0, 1)], axis=1)
+    return ids, centroid[ids] / total[ids, None]
+
+
+def centroid_difference(run, other):
+    """(largest centroid distance (m), its block id) of two wall impact runs,
+    over the blocks both have."""
+    ids, c = run["centroids"]
+    other_ids, other_c = other["centroids"]
+    common, mine, theirs = np.intersect1d(ids, other_ids, return_indices=True)
+    off = np.linalg.norm(c[mine] - other_c[theirs], axis=1)
+    worst = int(np.argmax(off))
+    return float(off[worst]), int(common[worst])
+
+
+class WallImpact:
+    """The boulder striking the 198-brick wall: every block's centroid at
+    the end against the all-meshed runs (tests/automatic_kinematics.cc)."""
+
+    name = "wall_impact"
+    title = "Boulder striking a brick wall (tests/automatic_kinematics.cc)"
+    measures = [
+        ("error", "largest block centroid difference against the reference run, of the scene size"),
+        ("off_same_step", "the same against the meshed run of the same step (the test's measure)"),
+    ]
+    axis_labels = {
+        "error": "centroid difference against the reference / scene size",
+        "off_same_step": "against meshed of the same step / scene size",
+    }
+    targets = {"error": IMPACT_TARGET, "off_same_step": IMPACT_TARGET}
+
+    def __init__(self, parameters):
+        self.end_time = float(parameters["Control/End time"])
+        self.block_names = [n.strip() for n in parameters["Geometry/Blocks"].split(",")]
+        if "boulder" not in self.block_names:
+            raise RuntimeError("the wall impact scene has no block 'boulder'")
+        self.velocity = [float(v) for v in
+                         parameters["Geometry/boulder/Initial velocity"].split(";")]
+
+    def evaluate(self, out_dir):
+        frames = ndda_output.read_pvd(os.path.join(out_dir, "solution.pvd"))
+        if abs(frames[0][0]) > 1e-12 or abs(frames[-1][0] - self.end_time) > 1e-9:
+            raise RuntimeError(f"frames at t = {frames[0][0]:g} and {frames[-1][0]:g} s")
+        first = ndda_output.read_vtu(frames[0][1])
+        last = ndda_output.read_vtu(frames[-1][1])
+        # The scene's size as the test's: the larger side of the initial
+        # mesh's bounding box.
+        extent = first.points[:, :2].max(axis=0) - first.points[:, :2].min(axis=0)
+        ids, centroid = block_centroids(last)
+        result = dict(scene_size=float(extent.max()), n_blocks=len(ids), centroids=(ids, centroid))
+        result.update(kinematics_statistics(out_dir))
+        return result
+
+    def finish(self, runs):
+        """The errors against the reference run and against the meshed run
+        of the same step, once all runs are done."""
+        reference = reference_run(runs)
+        meshed = {r["settings"]["time_step"]: r for r in runs
+                  if r.get("ok") and r["settings"]["model"] == "meshed"}
+        for r in runs:
+            if not r.get("ok"):
+                continue
+            r["is_reference"] = int(r is reference)
+            same = meshed.get(r["settings"]["time_step"])
+            for other, key in ((reference, "error"), (same, "off_same_step")):
+                off, block = (centroid_difference(r, other)
+                              if other is not None and other is not r else (math.nan, -1))
+                r[key + "_m"] = off
+                r[key + "_block"] = block
+                r[key] = off / r["scene_size"]
+
+
+CASE_CLASSES = {
+    "elastic_bar_wave": Bar,
+    "sliding_block": SlidingBlock,
+    "brazilian_disc": Disc,
+    "brick_wall": BrickWall,
+    "wall_impact": WallImpact,
+}
 CASE_RUNS = {
     "elastic_bar_wave": bar_runs,
     "sliding_block": sliding_runs,
     "brazilian_disc": disc_runs,
+    "brick_wall": brick_wall_runs,
+    "wall_impact": wall_impact_runs,
 }
 
 
@@ -530,14 +828,17 @@ def percent(value, digits=3):
 
 
 def setting_text(key, value):
-    """One setting in words: 'h = 5 mm', 'dt = 1 µs', 'P2', 'Newmark'."""
+    """One setting in words: 'h = 5 mm', 'dt = 1 µs', 'P2', 'Newmark',
+    'affine'."""
     if key == "mesh_size":
+        if value >= 0.1:
+            return f"h = {sig(value, 2)} m"
         return f"h = {sig(value * 1e3, 2)} mm"
     if key == "time_step":
         return f"dt = {sig(value * 1e6, 2)} µs" if value < 1e-4 else f"dt = {sig(value * 1e3, 2)} ms"
     if key == "degree":
         return f"P{value}"
-    if key == "integrator":
+    if key in ("integrator", "model"):
         return str(value)
     if key == "penalty":
         return f"penalty {value:g} E"
@@ -552,8 +853,10 @@ def short_label(settings):
     """A short label for the plot."""
     parts = []
     for key, value in settings.items():
-        if key == "mesh_size":
-            parts.append(f"h{sig(value * 1e3, 2)}")
+        if key == "model":
+            parts.append(value)
+        elif key == "mesh_size":
+            parts.append(f"h{sig(value, 2)}m" if value >= 0.1 else f"h{sig(value * 1e3, 2)}")
         elif key == "time_step":
             parts.append(f"dt{sig(value * 1e6, 2)}µ" if value < 1e-4 else f"dt{sig(value * 1e3, 2)}m")
         elif key == "degree":
@@ -569,11 +872,18 @@ def short_label(settings):
 # Pareto front
 
 
+def has_value(run, measure):
+    """Whether a run has a finite value of the measure (a case's reference
+    run has none of the errors against itself)."""
+    value = run.get(measure) if run.get("ok") else None
+    return isinstance(value, (int, float)) and math.isfinite(value)
+
+
 def pareto_front(runs, measure):
     """The runs no other run beats in both time and error, cheapest first;
     a run joins only if it cuts the front's error by FRONT_GAIN at least."""
     candidates = sorted(
-        (r for r in runs if r.get("ok") and math.isfinite(r[measure])),
+        (r for r in runs if has_value(r, measure)),
         key=lambda r: (r["cpu"], r[measure]),
     )
     front, best = [], math.inf
@@ -587,7 +897,7 @@ def pareto_front(runs, measure):
 def describe_front(front, measure, runs):
     """The Pareto front in words: which settings for which target error."""
     lines = []
-    n_ok = sum(1 for r in runs if r.get("ok"))
+    n_ok = sum(1 for r in runs if has_value(r, measure))
     lines.append(
         f"Pareto front: {len(front)} of the {n_ok} runs (cheapest first; each one the "
         f"cheapest run that reaches its error; a run counts only if it cuts the error by "
@@ -624,8 +934,8 @@ def describe_front(front, measure, runs):
     # Runs more accurate than the cheapest front point: if their errors
     # have both signs, small magnitudes may be zero crossings.
     signed = [r.get(measure + "_signed", r.get("error_signed") if measure == "error" else None)
-              for r in runs if r.get("ok") and r[measure] < front[0][measure]]
-    signed = [v for v in signed if v is not None]
+              for r in runs if has_value(r, measure) and r[measure] < front[0][measure]]
+    signed = [v for v in signed if v is not None and math.isfinite(v)]
     if signed and min(signed) < 0 < max(signed):
         lines.append(
             f"The signed errors below the cheapest run's have both signs ({percent(min(signed))} "
@@ -649,37 +959,87 @@ def describe_front(front, measure, runs):
 MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*"]
 
 
+class PlotStyle:
+    """Colour by the first numeric setting with several values, markers by
+    the categorical ones (block model, degree, integrator), size by the
+    second numeric one; the rest in the labels."""
+
+    def __init__(self, ok, cmap):
+        keys = list(ok[0]["settings"].keys())
+        varying = [k for k in keys if len(set(r["settings"][k] for r in ok)) > 1]
+        numeric = [k for k in varying if k in ("mesh_size", "time_step", "penalty")]
+        self.colour_key = numeric[0] if numeric else None
+        self.marker_keys = [k for k in varying if k in ("model", "degree", "integrator")]
+        self.size_key = numeric[1] if len(numeric) > 1 else None
+        self.colour_values = (sorted(set(r["settings"][self.colour_key] for r in ok))
+                              if self.colour_key else [None])
+        n = max(1, len(self.colour_values) - 1)
+        self.colours = {v: cmap(0.9 * i / n) for i, v in enumerate(self.colour_values)}
+        self.marker_values = sorted(set(self.marker_of(r["settings"]) for r in ok))
+        self.markers = {v: MARKERS[i % len(MARKERS)] for i, v in enumerate(self.marker_values)}
+        self.size_values = (sorted(set(r["settings"][self.size_key] for r in ok))
+                            if self.size_key else [None])
+        self.sizes = {v: 22 + 30 * i for i, v in enumerate(self.size_values)}
+
+    def marker_of(self, settings):
+        return tuple(settings[k] for k in self.marker_keys)
+
+    def scatter_style(self, settings):
+        """The keyword arguments of a run's point."""
+        return dict(
+            color=self.colours[settings[self.colour_key]] if self.colour_key else "C0",
+            marker=self.markers[self.marker_of(settings)],
+            s=self.sizes[settings[self.size_key]] if self.size_key else 36,
+            edgecolors="k", linewidths=0.4, alpha=0.85, zorder=3,
+        )
+
+    def legend_handles(self, with_target, with_reference):
+        """Legend entries: colours, markers, sizes, the front (the target, the
+        reference run's time)."""
+        from matplotlib.lines import Line2D
+
+        handles = []
+        if self.colour_key:
+            handles += [
+                Line2D([], [], marker="o", ls="", color=self.colours[v], markeredgecolor="k",
+                       label=setting_text(self.colour_key, v))
+                for v in self.colour_values
+            ]
+        handles += [
+            Line2D([], [], marker=self.markers[v], ls="", color="0.6", markeredgecolor="k",
+                   label=", ".join(setting_text(k, x) for k, x in zip(self.marker_keys, v))
+                   or "run")
+            for v in self.marker_values
+        ]
+        if self.size_key:
+            handles += [
+                Line2D([], [], marker="o", ls="", color="white", markeredgecolor="k",
+                       markersize=math.sqrt(self.sizes[v]), label=setting_text(self.size_key, v))
+                for v in self.size_values
+            ]
+        handles.append(Line2D([], [], color="crimson", label="Pareto front"))
+        if with_target:
+            handles.append(Line2D([], [], color="0.3", ls="--", lw=1, label="target"))
+        if with_reference:
+            handles.append(Line2D([], [], color="0.5", ls=":", lw=1,
+                                  label="time of the reference run"))
+        return handles
+
+
 def plot_case(case, runs, path):
     """Error against time, log-log, one panel per measure, the Pareto front
-    as a line with its points labelled."""
+    as a line with its points labelled (and the case's target, if any)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.lines import Line2D
     from matplotlib.ticker import FuncFormatter, LogLocator
 
     ok = [r for r in runs if r.get("ok")]
-    keys = list(ok[0]["settings"].keys())
-    # Colour by the first numeric setting with several values, markers by
-    # the categorical ones (degree, integrator), the rest in the labels.
-    varying = [k for k in keys if len(set(r["settings"][k] for r in ok)) > 1]
-    numeric = [k for k in varying if k in ("mesh_size", "time_step", "penalty")]
-    colour_key = numeric[0] if numeric else None
-    marker_keys = [k for k in varying if k in ("degree", "integrator")]
-    size_key = numeric[1] if len(numeric) > 1 else None
-
-    colour_values = sorted(set(r["settings"][colour_key] for r in ok)) if colour_key else [None]
-    cmap = plt.get_cmap("viridis")
-    colours = {
-        v: cmap(0.9 * i / max(1, len(colour_values) - 1)) for i, v in enumerate(colour_values)
-    }
-    marker_values = sorted(set(tuple(r["settings"][k] for k in marker_keys) for r in ok))
-    markers = {v: MARKERS[i % len(MARKERS)] for i, v in enumerate(marker_values)}
-    size_values = sorted(set(r["settings"][size_key] for r in ok)) if size_key else [None]
-    sizes = {v: 22 + 30 * i for i, v in enumerate(size_values)}
-
+    style = PlotStyle(ok, plt.get_cmap("viridis"))
+    reference = reference_of_runs(ok)
     measures = case.measures
+    targets = getattr(case, "targets", {})
     figure, axes = plt.subplots(
         1, len(measures), figsize=(6.4 * len(measures), 5.2), squeeze=False, dpi=100
     )
@@ -692,33 +1052,20 @@ def plot_case(case, runs, path):
             return 100 * max(r[measure], floor)  # in percent
 
         for r in ok:
-            s = r["settings"]
-            axis.scatter(
-                r["cpu"],
-                y(r),
-                color=colours[s[colour_key]] if colour_key else "C0",
-                marker=markers[tuple(s[k] for k in marker_keys)],
-                s=sizes[s[size_key]] if size_key else 36,
-                edgecolors="k",
-                linewidths=0.4,
-                alpha=0.85,
-                zorder=3,
-            )
+            if has_value(r, measure):  # not the reference run
+                axis.scatter(r["cpu"], y(r), **style.scatter_style(r["settings"]))
         front = pareto_front(ok, measure)
-        axis.plot(
-            [r["cpu"] for r in front],
-            [y(r) for r in front],
-            "-",
-            color="crimson",
-            lw=1.4,
-            zorder=2,
-            label="Pareto front",
-        )
+        axis.plot([r["cpu"] for r in front], [y(r) for r in front], "-", color="crimson",
+                  lw=1.4, zorder=2, label="Pareto front")
+        if measure in targets:
+            axis.axhline(100 * targets[measure], color="0.3", ls="--", lw=1, zorder=1)
+        if reference is not None:
+            axis.axvline(reference["cpu"], color="0.5", ls=":", lw=1, zorder=1)
         axis.set_xscale("log")
         axis.set_yscale("log")
         fronts.append((axis, [(r["cpu"], y(r), short_label(r["settings"])) for r in front]))
         axis.set_xlabel("time of the time steps (s, sum of 'Wall time per step')")
-        axis.set_ylabel(label + " (%)")
+        axis.set_ylabel(getattr(case, "axis_labels", {}).get(measure, label) + " (%)")
         for which in (axis.xaxis, axis.yaxis):
             which.set_major_formatter(plain)
             which.set_minor_formatter(FuncFormatter(lambda v, _: ""))
@@ -728,26 +1075,7 @@ def plot_case(case, runs, path):
         # Room for the labels on the right.
         low, high = axis.get_xlim()
         axis.set_xlim(low, high * 2.2)
-    # Legends: colours, markers, sizes.
-    handles = []
-    if colour_key:
-        handles += [
-            Line2D([], [], marker="o", ls="", color=colours[v], markeredgecolor="k",
-                   label=setting_text(colour_key, v))
-            for v in colour_values
-        ]
-    handles += [
-        Line2D([], [], marker=markers[v], ls="", color="0.6", markeredgecolor="k",
-               label=", ".join(setting_text(k, x) for k, x in zip(marker_keys, v)) or "run")
-        for v in marker_values
-    ]
-    if size_key:
-        handles += [
-            Line2D([], [], marker="o", ls="", color="white", markeredgecolor="k",
-                   markersize=math.sqrt(sizes[v]), label=setting_text(size_key, v))
-            for v in size_values
-        ]
-    handles.append(Line2D([], [], color="crimson", label="Pareto front"))
+    handles = style.legend_handles(bool(targets), reference is not None)
     n_columns = min(len(handles), 4 * len(measures))
     figure.legend(handles=handles, loc="lower center", ncol=n_columns, fontsize=8,
                   frameon=False)
@@ -832,6 +1160,33 @@ MEASURE_COLUMNS = {
         ("plate_difference", "top against bottom plate"),
         ("n_frames", "frames used"),
     ],
+    "brick_wall": [
+        ("is_reference", "reference run"),
+        ("settlement", "settlement at the end (m)"),
+        ("error_signed", "settlement error"),
+        ("peak_settlement", "largest settlement (m)"),
+        ("peak_settlement_error_signed", "largest settlement error"),
+        ("late_change", "settlement change over the last 40 % of the run (m)"),
+        ("drift", "largest |u_x| of the top corners (m)"),
+        ("max_speed", "largest velocity component of the top corners (m/s)"),
+        ("open_close_per_step", "open-close iterations per step"),
+        ("step_cuts", "step cuts"),
+        ("promotions", "promotions"),
+        ("most_meshed", "most blocks meshed at once"),
+    ],
+    "wall_impact": [
+        ("is_reference", "reference run"),
+        ("error_m", "largest centroid difference against the reference (m)"),
+        ("error_block", "block of the largest difference"),
+        ("off_same_step_m", "largest centroid difference against meshed, same step (m)"),
+        ("off_same_step_block", "block of the largest difference, same step"),
+        ("scene_size", "scene size (m)"),
+        ("n_blocks", "blocks at the end"),
+        ("open_close_per_step", "open-close iterations per step"),
+        ("step_cuts", "step cuts"),
+        ("promotions", "promotions"),
+        ("most_meshed", "most blocks meshed at once"),
+    ],
 }
 
 
@@ -845,7 +1200,8 @@ def _csv_measures():
 
 
 CSV_MEASURES = _csv_measures()
-INTEGER_MEASURES = ("step_cuts", "n_frames")
+INTEGER_MEASURES = ("step_cuts", "n_frames", "is_reference", "promotions", "most_meshed",
+                    "n_blocks", "error_block", "off_same_step_block")
 
 
 def write_csv(path, all_runs):
@@ -877,7 +1233,7 @@ def write_csv(path, all_runs):
             writer.writerow(row)
 
 
-def case_explanation(case, reference):
+def case_explanation(case, reference, runs):
     """The error measure and its reference, with the numbers of this run."""
     if case == "elastic_bar_wave":
         b = reference
@@ -932,11 +1288,11 @@ def case_explanation(case, reference):
             "",
             "    sigma_xx = 2 P / (pi D t),",
             "",
-            "with P the force through the top (driven) plate at the same time. ndda writes no "
-            "reaction force; as the test, P comes from the plate's stresses by the mean stress "
-            "theorem, `P = -t sum_c A_c sigma_yy,c / h` over the plate's cells (h the plate's "
-            "height), here from the VTU frames (cell mean stresses on the deformed mesh, "
-            f"written every {sig(DISC_INTERVAL * 1e3)} ms; the test uses every step). "
+            "with P the force through the top (driven) plate at the same time: as the test "
+            "(plate_force() of tests/plates.h), the vertical resultant of the contact forces "
+            "on the plate, the statistics column `top contact force y (N)` of the `block "
+            "forces` postprocessor, here at the times of the VTU frames (every "
+            f"{sig(DISC_INTERVAL * 1e3)} ms; the test uses every step). "
             "The centre's sigma_xx is the "
             "first measure point's (the mean stress of the cell around the centre). Error: "
             "the largest `|sigma_xx / (2P/(pi D t)) - 1|` over the frames from "
@@ -945,8 +1301,106 @@ def case_explanation(case, reference):
             "here: for the contact width the plates make, Hondros' solution is "
             "`(sin 2 alpha - alpha) / alpha` times 2P/(pi D t) (doc/validation.md), so the "
             "errors level off rather than go to zero.",
-        ]
+        ] + disc_model_explanation(d, runs)
+    if case == "brick_wall":
+        return brick_wall_explanation(reference, runs)
+    if case == "wall_impact":
+        return wall_impact_explanation(reference, runs)
     return []
+
+
+def disc_model_explanation(d, runs):
+    """The disc's block model axis in words (none for runs without it)."""
+    if not any("model" in r["settings"] for r in runs):
+        return []
+    return [
+        "",
+        "*Block model* is that of the two loading plates (`Kinematics` of the blocks "
+        "`top` and `bottom`; the scene's is `rigid`, 3 unknowns each); the disc stays "
+        "meshed. The rigid plates run every mesh size and degree; affine (6 unknowns) and "
+        f"meshed plates (their own meshes, {setting_text('mesh_size', d.plate_mesh)}) run "
+        + ", ".join(f"{setting_text('mesh_size', h)} P{p}" for h, p in DISC_MODEL_RUNS)
+        + ". P is the plate's contact force whatever its model.",
+    ]
+
+
+def reference_of_runs(runs):
+    """The run marked as the case's reference (also in a CSV read back)."""
+    return next((r for r in runs if r.get("ok") and r.get("is_reference")), None)
+
+
+def brick_wall_explanation(w, runs):
+    """case_explanation() of the brick wall."""
+    ref = reference_of_runs(runs)
+    lines = [
+        f"prm/brick_wall.prm: 102 bricks of 1 m × 0.5 m in 12 staggered courses "
+        f"({sig(w.width, 2)} m × {sig(w.height, 2)} m, rho = {sig(w.rho, 4)} kg/m³, "
+        f"E = {sig(w.E / 1e9, 3)} GPa, {w.plane}) on a rigid base, settling under gravity, "
+        f"run to {sig(WALL_END)} s (the test: 1 s; the wall is at rest long before, see "
+        "below). *Block model* is the bricks' (Control/Kinematics; "
+        "the base keeps its own `rigid`); rigid, affine and auto bricks keep the scene's mesh "
+        f"({setting_text('mesh_size', WALL_MESH)}, two cells a brick: their contact "
+        "nodes), meshed bricks also run on finer meshes.",
+        "",
+        "tests/stacks_stay_still.cc judges the wall by bounds only (every vertex's "
+        "horizontal drift and displacement below 1 mm, every velocity component below "
+        "5 cm/s, no penetration beyond the tolerance); it has no reference value. The "
+        "errors here are the settlement of the wall's top, `s = -(u_y,0 + u_y,1) / 2` of "
+        "the scene's two measure points in the top corner bricks "
+        + "; ".join(f"({sig(x, 3)}, {sig(y, 3)})" for x, y in w.points)
+        + ", against the same of the **reference run: the finest meshed run of the sweep** "
+        + (f"(**{settings_text(ref['settings'])}**: s = {sig(ref['settlement'] * 1e6, 4)} µm "
+           f"at the end, {sig(ref['peak_settlement'] * 1e6, 4)} µm at most)"
+           if ref else "(it failed: no errors)")
+        + ":",
+        "",
+        "- *Settlement error*: `|s / s_ref - 1|` at the end time (the wall at rest).",
+        "- *Largest settlement error*: the same for the largest settlement over the run "
+        "(the overshoot of the first tenth of a second: gravity acts from the first step, "
+        "and how much of it the step damps; the test's 'largest displacement').",
+        "",
+        "For comparison, a jointless column of the wall's height under its own weight "
+        f"settles by `rho g H² / (2 E)` = {sig(w.column * 1e6, 4)} µm"
+        + (f"; the reference run's {sig(ref['settlement'] * 1e6, 4)} µm is "
+           f"{percent(ref['settlement'] / w.column - 1, 2)} off it." if ref else ".")
+        + " The drift and speed bounds of the test are in the table, over the two top corners.",
+    ]
+    return lines
+
+
+def wall_impact_explanation(w, runs):
+    """case_explanation() of the wall impact."""
+    ref = reference_of_runs(runs)
+    sizes = sorted(set(r["scene_size"] for r in runs if r.get("ok") and "scene_size" in r))
+    size = sig(sizes[0], 3) + " m" if sizes else "the scene's size"
+    return [
+        "prm/wall_impact.prm: a boulder (1 m × 1 m) strikes a staggered wall of 198 bricks "
+        f"(16 m × 6 m, on a rigid base) at {sig(math.hypot(*w.velocity), 2)} m/s, gravity, "
+        f"joint friction 35°, to {sig(IMPACT_END)} s as the scene and the test. "
+        "*Block model* is that of every block "
+        "(Control/Kinematics; the scene's is `auto`) but the base, which keeps its own "
+        "`rigid`. Meshed blocks "
+        "may crack (the rock has `Fracture = true`); auto blocks start affine and are "
+        "meshed near the impact only (doc/theory.md, \"Automatic kinematics\").",
+        "",
+        "Error as tests/automatic_kinematics.cc measures it: every block's area-weighted "
+        "centroid on the deformed mesh of the last VTU frame (t = "
+        f"{sig(IMPACT_END)} s), the largest distance between a block's centroid and the "
+        f"same block's in the other run, divided by the scene's size ({size}, the larger "
+        "side of the initial mesh's bounding box). The target of issue 15 and of the test: "
+        f"{percent(IMPACT_TARGET, 2)} (dashed line).",
+        "",
+        "- *Against the reference run*: **the meshed run with the smallest step of the "
+        "sweep** "
+        + (f"(**{settings_text(ref['settings'])}**)" if ref else "(it failed: no errors)")
+        + "; the meshed runs with larger steps show what the step alone changes.",
+        "- *Against the meshed run of the same step*: the test's pairing (auto against "
+        "all-meshed, both with the scene's step), for every model and step; the meshed runs "
+        "have no such error.",
+        "",
+        "After an impact the blocks' paths are chaotic (doc/validation.md): a small "
+        "difference early (a step, a model) can move a block by centimetres at the end.",
+    ]
 
 
 # The tables' columns after the settings: (key, header, format) with the
@@ -971,10 +1425,33 @@ TABLE_COLUMNS = {
         ("force_end", "P at the end (kN)", "kN"),
         ("plate_difference", "top against bottom plate, largest", "percent"),
     ],
+    "brick_wall": [
+        ("error_signed", "settlement error", "percent"),
+        ("peak_settlement_error_signed", "largest settlement error", "percent"),
+        ("settlement", "settlement at the end (µm)", "µm"),
+        ("peak_settlement", "largest (µm)", "µm"),
+        ("drift", "largest top corner u_x (µm)", "µm"),
+        ("max_speed", "largest top corner velocity (mm/s)", "mm/s"),
+        ("open_close_per_step", "open-close iterations per step", "number"),
+        ("promotions", "promotions", "int"),
+    ],
+    "wall_impact": [
+        ("error", "against the reference", "percent"),
+        ("error_m", "against the reference (m)", "number"),
+        ("off_same_step", "against meshed, same step", "percent"),
+        ("error_block", "block farthest off", "block"),
+        ("step_cuts", "step cuts", "int"),
+        ("promotions", "promotions", "int"),
+        ("most_meshed", "most blocks meshed at once", "int"),
+    ],
 }
 
 
 def table_cell(value, kind):
+    if value is None or (isinstance(value, float) and not math.isfinite(value)):
+        return "–"
+    if kind == "µm":
+        return sig(1e6 * value)
     if kind == "percent":
         return percent(value)
     if kind == "mm/s":
@@ -983,6 +1460,8 @@ def table_cell(value, kind):
         return sig(1e-3 * value, 4)
     if kind == "int":
         return str(int(value))
+    if kind == "block":  # a block id, -1 for none
+        return str(int(value)) if value >= 0 else "–"
     return sig(value, 3)
 
 
@@ -1009,11 +1488,13 @@ def markdown_table(case_name, runs):
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for r in runs:
         cells = [setting_text(k, r["settings"][k]) for k in keys]
+        if r.get("is_reference"):
+            cells[0] = f"**{cells[0]}** (reference)"
         cells += [str(r.get("cells", "")), str(r.get("dofs", ""))]
         if not r.get("ok"):
             cells += ["failed"] + [""] * (len(head) - len(cells) - 1)
         else:
-            cells += [table_cell(r[key], kind) for key, _, kind in columns]
+            cells += [table_cell(r.get(key), kind) for key, _, kind in columns]
             times = r["times"]
             cells.append(sig(r["cpu"]))
             cells.append(f"{sig(min(times))}–{sig(max(times))}" if len(times) > 1 else "")
@@ -1136,6 +1617,152 @@ def case_remarks(case_name, ok):
     return lines
 
 
+def model_pairs(ok, model):
+    """(run of the model, meshed run with every other setting the same)."""
+    def others(r):
+        return tuple((k, v) for k, v in r["settings"].items() if k != "model")
+
+    meshed = {others(r): r for r in ok if r["settings"].get("model") == "meshed"}
+    return [(r, meshed[others(r)]) for r in ok
+            if r["settings"].get("model") == model and others(r) in meshed]
+
+
+def model_remarks(case_name, ok):
+    """Per block model: its errors, its place on the Pareto fronts and its
+    time against the meshed run with the other settings the same."""
+    models = [m for m in MODELS if any(r["settings"].get("model") == m for r in ok)]
+    if len(models) < 2:
+        return []
+    lines = ["**Block models.** Errors by model (smallest–largest), and how many of its "
+             "runs are on the Pareto front:", ""]
+    for measure, label in CASE_CLASSES[case_name].measures:
+        on = collections.Counter(r["settings"]["model"] for r in pareto_front(ok, measure))
+        parts = []
+        for m in models:
+            values = [r[measure] for r in ok
+                      if r["settings"].get("model") == m and has_value(r, measure)]
+            if not values:
+                parts.append(f"{m}: the reference")
+                continue
+            low, high = percent(min(values), 2), percent(max(values), 2)
+            span = low if low == high else f"{low}–{high}"
+            parts.append(f"{m} {span} ({on[m]} of {len(values)} on the front)")
+        lines.append(f"- {label[0].upper() + label[1:]}: " + "; ".join(parts) + ".")
+    lines += ["", "Time against meshed (the time of the steps of the run over that of "
+              "the meshed run with every other setting the same):", ""]
+    for m in models:
+        pairs = model_pairs(ok, m) if m != "meshed" else []
+        if pairs:
+            ratios = [r["cpu"] / q["cpu"] for r, q in pairs]
+            each = "; ".join(
+                f"{sig(x, 2)} at "
+                + ", ".join(setting_text(k, v) for k, v in r["settings"].items() if k != "model")
+                for x, (r, _) in zip(ratios, pairs))
+            measure = CASE_CLASSES[case_name].measures[0][0]
+            differences = [abs(r[measure] - q[measure]) for r, q in pairs
+                           if has_value(r, measure) and has_value(q, measure)]
+            lines.append(
+                f"- {m}: {each}" + (f"; median {sig(float(np.median(ratios)), 2)}"
+                                    if len(pairs) > 1 else "")
+                + (f". Its {measure.replace('_', ' ')} differs from the meshed run's by at most "
+                   f"{sig(100 * max(differences), 2)} percentage points." if differences else "."))
+    lines.append("")
+    return lines
+
+
+def brick_wall_remarks(ok, wall):
+    """What the brick wall's data say beyond the fronts."""
+    lines = []
+    rigid = [r for r in ok if r["settings"]["model"] == "rigid"]
+    if rigid and wall.column > 0:
+        s = [r["settlement"] for r in rigid]
+        low, high = sig(min(s) * 1e6, 2), sig(max(s) * 1e6, 2)
+        span = low if low == high else f"{low}–{high}"
+        lines.append(
+            f"Rigid bricks settle by {span} µm at the "
+            "end: the joints' contact springs only, a rigid brick does not shorten "
+            f"(the jointless column: {sig(wall.column * 1e6, 3)} µm).")
+    pairs = [(a, f) for a in ok if a["settings"]["model"] == "auto" for f in ok
+             if f["settings"]["model"] == "affine"
+             and all(f["settings"][k] == a["settings"][k] for k in a["settings"] if k != "model")]
+    if pairs and all(a.get("promotions", 0) == 0 for a, _ in pairs):
+        difference = max(abs(a["settlement"] - f["settlement"]) for a, f in pairs)
+        lines.append(
+            "No auto brick was promoted in any run: the scene's rock has no `Fracture = "
+            "true`, and auto blocks of a material without fracture keep the start model "
+            "(affine). The auto runs are the affine runs ("
+            + ("identical settlements" if difference == 0
+               else f"settlements within {sig(difference * 1e6, 2)} µm")
+            + (", the same open-close iterations" if all(
+                a["open_close_per_step"] == f["open_close_per_step"] for a, f in pairs) else "")
+            + "); where their times differ (auto over "
+            "affine: " + ", ".join(sig(a["cpu"] / f["cpu"], 2) for a, f in pairs)
+            + "), that is the noise of the machine.")
+    meshed = [r for r in ok if r["settings"]["model"] == "meshed"]
+    if len(meshed) > 1:
+        s = [r["settlement"] for r in meshed]
+        by_size = collections.defaultdict(list)
+        for r in sorted(meshed, key=lambda r: -r["settings"]["time_step"]):
+            by_size[r["settings"]["mesh_size"]].append(sig(r["settlement"] * 1e6, 4))
+        lines.append(
+            f"The meshed runs settle by {sig(min(s) * 1e6, 4)}–{sig(max(s) * 1e6, 4)} µm "
+            f"({percent((max(s) - min(s)) / max(s), 2)} apart; from the largest step to the "
+            "smallest, "
+            + "; ".join(f"{setting_text('mesh_size', h)}: {', '.join(v)}"
+                        for h, v in sorted(by_size.items(), reverse=True))
+            + " µm). A wall at rest on frictional joints keeps the shear the transient "
+            "leaves in them, so the step changes the state it settles in.")
+    measured = [r for r in ok if "late_change" in r]
+    if measured:
+        settled = max(measured, key=lambda r: r["late_change"])
+        lines.append(
+            f"Over the last 40 % of each run the top moves by at most "
+            f"{sig(settled['late_change'] * 1e6, 2)} µm ({settings_text(settled['settings'])}).")
+    worst_drift = max(ok, key=lambda r: r["drift"])
+    worst_speed = max(ok, key=lambda r: r["max_speed"])
+    lines.append(
+        f"The test's bounds hold in every run: the largest horizontal displacement of a top "
+        f"corner is {sig(worst_drift['drift'] * 1e6, 2)} µm "
+        f"({settings_text(worst_drift['settings'])}; bound 1 mm), the largest velocity "
+        f"component {sig(worst_speed['max_speed'] * 1e3, 2)} mm/s "
+        f"({settings_text(worst_speed['settings'])}; bound 50 mm/s)."
+        if worst_drift["drift"] < 1e-3 and worst_speed["max_speed"] < 5e-2 else
+        f"The test's bounds fail: largest horizontal top corner displacement "
+        f"{sig(worst_drift['drift'] * 1e3, 2)} mm, largest velocity "
+        f"{sig(worst_speed['max_speed'] * 1e3, 2)} mm/s.")
+    return lines + [""]
+
+
+def wall_impact_remarks(ok, impact):
+    """What the wall impact's data say beyond the fronts."""
+    lines = []
+    boulder = impact.block_names.index("boulder")
+    for measure, label in WallImpact.measures:
+        runs = [r for r in ok if has_value(r, measure)]
+        if not runs:
+            continue
+        within = [r for r in runs if r[measure] <= IMPACT_TARGET]
+        outside = [r for r in runs if r[measure] > IMPACT_TARGET]
+        lines.append(
+            f"{label[0].upper() + label[1:]}: {len(within)} of {len(runs)} runs within "
+            f"{percent(IMPACT_TARGET, 2)}"
+            + ("; outside it: " + "; ".join(f"{settings_text(r['settings'])} ({percent(r[measure], 2)})"
+                                    for r in outside) if outside else "")
+            + ".")
+    farthest = collections.Counter(r["error_block"] == boulder for r in ok if has_value(r, "error"))
+    if farthest:
+        lines.append(
+            f"The block farthest off the reference is the boulder in {farthest[True]} of "
+            f"{sum(farthest.values())} runs.")
+    auto = [r for r in ok if r["settings"]["model"] == "auto"]
+    if auto:
+        lines.append(
+            "Auto runs: " + "; ".join(
+                f"{settings_text(r['settings'])}: {r['promotions']} promotions, at most "
+                f"{r['most_meshed']} blocks meshed at once" for r in auto) + ".")
+    return lines + [""]
+
+
 def write_markdown(path, meta, results, references, pngs, csv_path):
     """The markdown fragment: method, then per case the measure, the plot,
     the Pareto front in words and the table of all runs."""
@@ -1168,24 +1795,40 @@ def write_markdown(path, meta, results, references, pngs, csv_path):
         ),
         "",
         "**Error** is computed by the script from ndda's output files, the way the "
-        "case's C++ test measures it. The plots show magnitudes on log axes; the tables "
-        "give the errors with their sign.",
+        "case's C++ test measures it, against an analytical reference or, where the test "
+        "has none, against a run of the sweep (said in the case; that run has no error "
+        "and is not plotted). The plots show magnitudes on log axes; the tables "
+        "give the errors with their sign. The tables' cells and dofs are the whole "
+        "mesh's whatever the blocks' models (the nodes of a rigid or affine block follow "
+        "its 3 or 6 unknowns).",
         "",
     ]
     for case_name, runs in results.items():
         case = CASE_CLASSES[case_name]
         lines += [f"### {case.title}", ""]
-        lines += case_explanation(case_name, references[case_name])
+        seconds = meta.get("case_seconds", {}).get(case_name)
+        if seconds is not None:
+            lines += [f"{len(runs)} settings, {sum(len(r.get('times', [])) or 1 for r in runs)} "
+                      f"ndda runs, {sig(seconds / 60, 2)} min.", ""]
+        lines += case_explanation(case_name, references[case_name], runs)
         lines += ["", f"![{case_name}]({os.path.relpath(pngs[case_name], md_dir)})", ""]
         ok = [r for r in runs if r.get("ok")]
         if ok:
             for measure, label in case.measures:
                 front = pareto_front(ok, measure)
+                if not front:
+                    lines += [f"No run has the {label} (no reference run).", ""]
+                    continue
                 text = describe_front(front, measure, runs)
                 if len(case.measures) > 1:
                     text[0] = f"**{label[0].upper() + label[1:]}.** " + text[0]
                 lines += text + [""]
         lines += case_remarks(case_name, ok)
+        lines += model_remarks(case_name, ok)
+        if case_name == "brick_wall":
+            lines += brick_wall_remarks(ok, references[case_name])
+        elif case_name == "wall_impact":
+            lines += wall_impact_remarks(ok, references[case_name])
         failed = [r for r in runs if not r.get("ok")]
         groups = collections.OrderedDict()
         for r in failed:
@@ -1209,11 +1852,13 @@ def read_csv(path):
             case_name = row["case"]
             settings = collections.OrderedDict()
             for key in SETTING_NAMES:
-                if row[key] != "":
-                    value = row[key]
+                # A CSV of an older version of the script lacks newer keys
+                # (the block model): those runs have the scene's setting.
+                value = row.get(key, "")
+                if value != "":
                     settings[key] = (
                         int(value) if key == "degree"
-                        else value if key == "integrator"
+                        else value if key in ("integrator", "model")
                         else float(value)
                     )
             record = dict(case=case_name, settings=settings, ok=row["status"] == "ok")
@@ -1249,6 +1894,75 @@ def noise_of(all_runs, startup):
 
 
 # --------------------------------------------------------------------------
+# The sweep
+
+
+def status_text(case_name, record):
+    """A run's errors and time for the progress lines."""
+    if not record.get("ok"):
+        return "FAILED: " + record["failure"]
+    measures = [(key, record.get(key)) for key, _ in CASE_CLASSES[case_name].measures]
+    if all(value is None for _, value in measures):
+        return f"{sig(record['cpu'])} s (errors once the reference run is done)"
+    return ", ".join(f"{key} {percent(value) if value is not None else '–'}"
+                     for key, value in measures) + f", {sig(record['cpu'])} s"
+
+
+def measure_run(binary, text, run_dir, args, record, reference, startup):
+    """Run one setting (again, if fast, for its time), evaluate its output
+    and fill the record; raises what run_ndda and the evaluation raise."""
+    record["processes"] = record.get("processes", 0) + 1
+    timing, log = run_ndda(binary, text, run_dir, args.timeout)
+    out_dir = os.path.join(run_dir, "out")
+    record["cells"], record["dofs"] = mesh_size_of_log(log)
+    record.update(reference.evaluate(out_dir))
+    record["times"].append(timing.step_sum)
+    record["process_wall"] = timing.process_wall
+    record["process_cpu"] = timing.process_cpu
+    startup.append(timing.process_wall - timing.step_sum)
+    if timing.step_sum < args.repeat_below:
+        for _ in range(args.repeats - 1):
+            record["processes"] += 1
+            again, _ = run_ndda(binary, text, run_dir + "_again", args.timeout)
+            record["times"].append(again.step_sum)
+        shutil.rmtree(run_dir + "_again", ignore_errors=True)
+    record["cpu"] = float(np.min(record["times"]))
+
+
+def run_case(case_name, settings_list, reference, args, binary, work_dir, startup):
+    """Run the sweep of one case, one ndda process at a time; the records of
+    its runs (errors against a run of the sweep once all are done)."""
+    with open(os.path.join(args.prm_dir, case_name + ".prm")) as stream:
+        base_text = stream.read()
+    runs = []
+    for n, settings in enumerate(settings_list):
+        settings = collections.OrderedDict(
+            (k, settings[k]) for k in SETTING_NAMES if k in settings)
+        record = dict(case=case_name, settings=settings, times=[])
+        run_dir = os.path.join(work_dir, case_name, f"run{n:03d}")
+        text = base_text + "\n" + overrides(case_name, settings)
+        try:
+            measure_run(binary, text, run_dir, args, record, reference, startup)
+            record["ok"] = True
+        except (RuntimeError, ndda_output.OutputError, KeyError, ValueError,
+                ZeroDivisionError, FloatingPointError) as error:
+            record["ok"] = False
+            record["failure"] = str(error).replace("|", "/")[:600]
+        if not args.work_dir:
+            shutil.rmtree(run_dir, ignore_errors=True)
+        runs.append(record)
+        print(f"{case_name} {n + 1}/{len(settings_list)}: "
+              f"{settings_text(settings)}: {status_text(case_name, record)}", flush=True)
+    if hasattr(reference, "finish"):
+        reference.finish(runs)
+        for r in runs:
+            print(f"{case_name}: {settings_text(r['settings'])}"
+                  f"{' (reference)' if r.get('is_reference') else ''}: "
+                  f"{status_text(case_name, r)}", flush=True)
+    return runs
+
+
+# --------------------------------------------------------------------------
 
 
 def main():
@@ -1262,7 +1976,7 @@ def main():
     parser.add_argument("--markdown", required=True, help="the markdown fragment to write")
     parser.add_argument("--cases", default=",".join(CASES),
                         help=f"comma separated, of {', '.join(CASES)}")
-    parser.add_argument("--quick", action="store_true", help="2-3 runs per case")
+    parser.add_argument("--quick", action="store_true", help="2-4 runs per case")
     parser.add_argument("--work-dir", default=None,
                         help="folder for the runs' output, kept (default: a temporary one, removed)")
     parser.add_argument("--repeat-below", type=float, default=None,
@@ -1317,55 +2031,17 @@ def main():
         work_dir = args.work_dir or tempfile.mkdtemp(prefix="speed_accuracy_")
         start = time.perf_counter()
         load_start = os.getloadavg()[0]
-        startup, all_runs, n_processes = [], [], 0
+        startup, all_runs, case_seconds = [], [], {}
         for case_name in cases:
-            with open(os.path.join(args.prm_dir, case_name + ".prm")) as stream:
-                base_text = stream.read()
-            runs = []
+            case_start = time.perf_counter()
             settings_list = CASE_RUNS[case_name](args.quick)
             references[case_name] = reference_of(case_name, settings_list[0])
-            for n, settings in enumerate(settings_list):
-                settings = collections.OrderedDict(
-                    (k, settings[k]) for k in SETTING_NAMES if k in settings)
-                record = dict(case=case_name, settings=settings, times=[])
-                run_dir = os.path.join(work_dir, case_name, f"run{n:03d}")
-                text = base_text + "\n" + overrides(case_name, settings)
-                try:
-                    n_processes += 1
-                    timing, log = run_ndda(binary, text, run_dir, args.timeout)
-                    out_dir = os.path.join(run_dir, "out")
-                    record["cells"], record["dofs"] = mesh_size_of_log(log)
-                    record.update(references[case_name].evaluate(out_dir))
-                    record["times"].append(timing.step_sum)
-                    record["process_wall"] = timing.process_wall
-                    record["process_cpu"] = timing.process_cpu
-                    startup.append(timing.process_wall - timing.step_sum)
-                    if timing.step_sum < args.repeat_below:
-                        for _ in range(args.repeats - 1):
-                            n_processes += 1
-                            again, _ = run_ndda(binary, text, run_dir + "_again", args.timeout)
-                            record["times"].append(again.step_sum)
-                        shutil.rmtree(run_dir + "_again", ignore_errors=True)
-                    record["cpu"] = float(np.min(record["times"]))
-                    record["ok"] = True
-                except (RuntimeError, ndda_output.OutputError, KeyError, ValueError,
-                        ZeroDivisionError, FloatingPointError) as error:
-                    record["ok"] = False
-                    record["failure"] = str(error).replace("|", "/")[:600]
-                if not args.work_dir:
-                    shutil.rmtree(run_dir, ignore_errors=True)
-                runs.append(record)
-                all_runs.append(record)
-                if record.get("ok"):
-                    status = ", ".join(
-                        f"{key} {percent(record[key])}"
-                        for key, _ in CASE_CLASSES[case_name].measures
-                    ) + f", {sig(record['cpu'])} s"
-                else:
-                    status = "FAILED: " + record["failure"]
-                print(f"{case_name} {n + 1}/{len(settings_list)}: "
-                      f"{settings_text(settings)}: {status}", flush=True)
+            runs = run_case(case_name, settings_list, references[case_name], args, binary,
+                            work_dir, startup)
             results[case_name] = runs
+            all_runs += runs
+            case_seconds[case_name] = time.perf_counter() - case_start
+        n_processes = sum(r.get("processes", 0) for r in all_runs)
         if not args.work_dir:
             shutil.rmtree(work_dir, ignore_errors=True)
         meta = dict(
@@ -1380,6 +2056,7 @@ def main():
             repeat_below=args.repeat_below,
             repeats=args.repeats,
             noise=noise_of(all_runs, startup),
+            case_seconds=case_seconds,
         )
         write_csv(csv_path, all_runs)
         with open(meta_path, "w") as stream:
