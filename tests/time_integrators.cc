@@ -284,17 +284,27 @@ end
           "a scene with the program's scheme");
   }
 
-  void
-  test_step_controller()
+  /** The limits of the step controller tests: a step of 0.1 s to 0.35 s. */
+  StepController::Limits
+  step_limits()
   {
-    std::cout << "Step controller" << std::endl;
     StepController::Limits limits;
     limits.nominal_step              = 0.1;
     limits.end_time                  = 0.35;
     limits.max_cuts                  = 3;
     limits.max_displacement_ratio    = 0.01;
     limits.max_open_close_iterations = 6;
-    StepController controller(limits);
+    return limits;
+  }
+
+
+
+  void
+  test_step_controller()
+  {
+    std::cout << "Step controller" << std::endl;
+    const StepController::Limits limits = step_limits();
+    StepController               controller(limits);
 
     double t = 0;
     controller.begin_step(1, t);
@@ -371,12 +381,7 @@ end
   void
   test_step_hold()
   {
-    StepController::Limits limits;
-    limits.nominal_step              = 0.1;
-    limits.end_time                  = 0.35;
-    limits.max_cuts                  = 3;
-    limits.max_displacement_ratio    = 0.01;
-    limits.max_open_close_iterations = 6;
+    const StepController::Limits limits = step_limits();
     // A motion that needs half the step for a while: every growth back
     // to the full step fails (one cut), and the size is held for 1, 2,
     // 4, ... accepted steps before the next try; a growth that holds
