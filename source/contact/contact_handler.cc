@@ -32,6 +32,7 @@ namespace ndda
       edge_friction = friction_in;
       dofs          = &dofs_in;
       settings      = settings_in;
+      edge_shapes.initialize(*dofs->fe);
       neighbours.clear();
       if (!settings.law)
         settings.law = create_contact_law(default_contact_law);
@@ -149,7 +150,7 @@ namespace ndda
     void
     ContactHandler::assemble(
       const std::function<
-        void(const std::vector<dealii::types::global_dof_index> &,
+        void(const dealii::ArrayView<const dealii::types::global_dof_index> &,
              const dealii::FullMatrix<double> &)> &add,
       dealii::Vector<double>                      &rhs) const
     {
@@ -185,9 +186,11 @@ namespace ndda
           const unsigned int n = o.dofs.size();
           k.reinit(n, n);
           settings.law->add_springs(o, c, c.scale, settings, &k, rhs);
+          const dealii::ArrayView<const dealii::types::global_dof_index>
+            option_dofs(o.dofs.data(), n);
           if (turned)
-            frames->turn(o.dofs, k);
-          add(o.dofs, k);
+            frames->turn(option_dofs, k);
+          add(option_dofs, k);
         }
     }
 

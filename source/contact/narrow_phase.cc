@@ -51,6 +51,99 @@ namespace ndda
 
 
 
+    void
+    ContactHandler::EdgeShapes::initialize(
+      const dealii::FiniteElement<2> &fe_in)
+    {
+      fe               = &fe_in;
+      n_points         = fe->degree + 1;
+      sampled          = n_points <= max_points;
+      const auto point = [](const unsigned int k, const double c) {
+        return Point<2>(unit_vertex[k] +
+                        c * (unit_vertex[(k + 1) % 3] - unit_vertex[k]));
+      };
+      for (unsigned int k = 0; k < 3 && sampled; ++k)
+        {
+          edge_dofs[k].clear();
+          samples[k].clear();
+          for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+            {
+              std::vector<double> v(n_points);
+              double              largest = 0;
+              for (unsigned int j = 0; j < n_points; ++j)
+                {
+                  v[j] = fe->shape_value(i, point(k, double(j) / fe->degree));
+                  largest = std::max(largest, std::abs(v[j]));
+                }
+              if (largest <= 1e-13)
+                continue; // vanishes on the edge (checked below)
+              edge_dofs[k].push_back(i);
+              samples[k].insert(samples[k].end(), v.begin(), v.end());
+            }
+        }
+      // The interpolation must reproduce every function at points between
+      // the samples, the vanishing ones included; else evaluate directly.
+      std::vector<double> value(fe->n_dofs_per_cell());
+      for (unsigned int k = 0; k < 3 && sampled; ++k)
+        for (const double c : {0.2718281828, 0.6180339887})
+          {
+            std::fill(value.begin(), value.end(), 0.);
+            values(k, c, value.data());
+            std::vector<double> on_edge(fe->n_dofs_per_cell(), 0.);
+            for (unsigned int q = 0; q < edge_dofs[k].size(); ++q)
+              on_edge[edge_dofs[k][q]] = value[q];
+            for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+              if (std::abs(on_edge[i] - fe->shape_value(i, point(k, c))) >
+                  1e-12)
+                sampled = false;
+          }
+      if (!sampled)
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            edge_dofs[k].resize(fe->n_dofs_per_cell());
+            for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+              edge_dofs[k][i] = i;
+          }
+    }
+
+
+
+    void
+    ContactHandler::EdgeShapes::values(const unsigned int k,
+                                       const double       c,
+                                       double            *values) const
+    {
+      const unsigned int n = edge_dofs[k].size();
+      if (!sampled)
+        {
+          const Point<2> xi =
+            unit_vertex[k] + c * (unit_vertex[(k + 1) % 3] - unit_vertex[k]);
+          for (unsigned int q = 0; q < n; ++q)
+            values[q] = fe->shape_value(edge_dofs[k][q], xi);
+          return;
+        }
+      // Lagrange basis on the points j / p.
+      const unsigned int p = n_points - 1;
+      double             basis[max_points];
+      for (unsigned int j = 0; j <= p; ++j)
+        {
+          basis[j] = 1;
+          for (unsigned int m = 0; m <= p; ++m)
+            if (m != j)
+              basis[j] *= (c * p - m) / (double(j) - m);
+        }
+      const double *sample = samples[k].data();
+      for (unsigned int q = 0; q < n; ++q, sample += n_points)
+        {
+          double v = 0;
+          for (unsigned int j = 0; j <= p; ++j)
+            v += sample[j] * basis[j];
+          values[q] = v;
+        }
+    }
+
+
+
     Option
     ContactHandler::make_option(const std::vector<Point<2>> &vertices,
                                 const unsigned int           vertex,
@@ -62,39 +155,39 @@ namespace ndda
       const Point<2>     &p = vertices[vertex];
 
       Option o;
-      o.vertex                   = vertex;
-      o.edge                     = edge;
-      const Tensor<1, 2> t       = b - a;
-      o.length                   = t.norm();
-      o.tangent                  = t / o.length;
-      o.normal[0]                = o.tangent[1];
-      o.normal[1]                = -o.tangent[0];
-      o.ratio                    = ((p - a) * t) / (o.length * o.length);
-      o.gap                      = (p - a) * o.normal;
-      const double       clamped = std::clamp(o.ratio, 0., 1.);
-      const unsigned int k0      = e.local_vertex;
-      const unsigned int k1      = (k0 + 1) % 3;
-      const Point<2>     xi =
-        unit_vertex[k0] + clamped * (unit_vertex[k1] - unit_vertex[k0]);
-      const unsigned int n_cell_dofs = dofs->dofs_per_cell;
+      o.vertex             = vertex;
+      o.edge               = edge;
+      const Tensor<1, 2> t = b - a;
+      o.length             = t.norm();
+      o.tangent            = t / o.length;
+      o.normal[0]          = o.tangent[1];
+      o.normal[1]          = -o.tangent[0];
+      o.ratio              = ((p - a) * t) / (o.length * o.length);
+      o.gap                = (p - a) * o.normal;
+      const double                     clamped = std::clamp(o.ratio, 0., 1.);
+      const unsigned int               k       = e.local_vertex;
+      const std::vector<unsigned int> &local   = edge_shapes.dofs(k);
+      const unsigned int               n       = 2 + local.size();
 
-      o.dofs.resize(2 + n_cell_dofs);
-      o.wn.resize(2 + n_cell_dofs);
-      o.wt.resize(2 + n_cell_dofs);
+      o.dofs.resize(n);
+      o.wn.resize(n);
+      o.wt.resize(n);
       for (unsigned int c = 0; c < 2; ++c)
         {
           o.dofs[c] = dofs->vertex_dofs[vertex][c];
           o.wn[c]   = o.normal[c];
           o.wt[c]   = o.tangent[c];
         }
+      // The shape values go to wn first, then the entries are made.
+      edge_shapes.values(k, clamped, &o.wn[2]);
       const global_dof_index *cell_dofs = dofs->dofs_of_cell(e.cell);
-      for (unsigned int i = 0; i < n_cell_dofs; ++i)
+      for (unsigned int q = 0; q < local.size(); ++q)
         {
-          const double       N = dofs->fe->shape_value(i, xi);
-          const unsigned int c = dofs->local_component[i];
-          o.dofs[2 + i]        = cell_dofs[i];
-          o.wn[2 + i]          = -N * o.normal[c];
-          o.wt[2 + i]          = -N * o.tangent[c];
+          const double       N = o.wn[2 + q];
+          const unsigned int c = dofs->local_component[local[q]];
+          o.dofs[2 + q]        = cell_dofs[local[q]];
+          o.wn[2 + q]          = -N * o.normal[c];
+          o.wt[2 + q]          = -N * o.tangent[c];
         }
       return o;
     }

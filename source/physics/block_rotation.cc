@@ -289,24 +289,26 @@ namespace ndda
 
 
   void
-  BlockFrames::turn(const std::vector<index> &dofs, FullMatrix<double> &k) const
+  BlockFrames::turn(const ArrayView<const index> &dofs,
+                    FullMatrix<double>           &k) const
   {
     // Rows (Q^T k), then columns (k Q), on each node's x dof and its
-    // partner among @p dofs: [x; y] <- [c x + s y; -s x + c y].
-    const unsigned int        n = dofs.size();
-    std::vector<unsigned int> partner(n, numbers::invalid_unsigned_int);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        if (dofs[j] == dof_map->node_dofs[dof_map->dof_to_node[dofs[i]]][1])
-          partner[i] = j;
+    // partner among @p dofs: [x; y] <- [c x + s y; -s x + c y]. Nodes in
+    // the global frame (sin 0: reduced blocks, blocks that have not
+    // turned) are left as they are.
+    const unsigned int n = dofs.size();
     for (unsigned int i = 0; i < n; ++i)
       {
         const unsigned int node = dof_map->dof_to_node[dofs[i]];
-        if (partner[i] == numbers::invalid_unsigned_int ||
-            dofs[i] != dof_map->node_dofs[node][0] || node_sin[node] == 0.)
+        if (node_sin[node] == 0. || dofs[i] != dof_map->node_dofs[node][0])
           continue;
-        const double       c = node_cos[node], s = node_sin[node];
-        const unsigned int p = partner[i];
+        const auto   y = dof_map->node_dofs[node][1];
+        unsigned int p = 0;
+        while (p < n && dofs[p] != y)
+          ++p;
+        if (p == n)
+          continue;
+        const double c = node_cos[node], s = node_sin[node];
         for (unsigned int j = 0; j < n; ++j)
           {
             const double x = k(i, j), y = k(p, j);

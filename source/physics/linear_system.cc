@@ -129,8 +129,9 @@ namespace ndda
 
 
   void
-  LinearSystem::add_to_compact(const std::vector<types::global_dof_index> &dofs,
-                               const FullMatrix<double>                   &k)
+  LinearSystem::add_to_compact(
+    const ArrayView<const types::global_dof_index> &dofs,
+    const FullMatrix<double>                       &k)
   {
     // The compact unknowns the block touches (sorted), and T (n x m) in
     // sparse rows: a dof expands to one to a few compact unknowns. The
@@ -409,8 +410,8 @@ namespace ndda
         else
           condensed_matrix.copy_from(condensed_base);
         add_springs(
-          [&](const std::vector<types::global_dof_index> &dofs,
-              const FullMatrix<double>                   &k) {
+          [&](const ArrayView<const types::global_dof_index> &dofs,
+              const FullMatrix<double>                       &k) {
             // Through the lines where a dof has one (deal.II's sorting
             // costs more than the add), else added row by row; straight
             // into the compact system if there is one.
@@ -419,7 +420,10 @@ namespace ndda
             else if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
                        return affine.is_constrained(i);
                      }))
-              affine.distribute_local_to_global(k, dofs, condensed_matrix);
+              affine.distribute_local_to_global(
+                k,
+                std::vector<types::global_dof_index>(dofs.begin(), dofs.end()),
+                condensed_matrix);
             else
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 condensed_matrix.add(

@@ -2,6 +2,7 @@
 #ifndef ndda_contact_contact_handler_h
 #define ndda_contact_contact_handler_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
@@ -179,10 +180,11 @@ namespace ndda
        * components.
        */
       void
-      assemble(const std::function<
-                 void(const std::vector<dealii::types::global_dof_index> &,
-                      const dealii::FullMatrix<double> &)> &add,
-               dealii::Vector<double>                      &rhs) const;
+      assemble(
+        const std::function<
+          void(const dealii::ArrayView<const dealii::types::global_dof_index> &,
+               const dealii::FullMatrix<double> &)> &add,
+        dealii::Vector<double>                      &rhs) const;
 
       /**
        * For the Newmark integrator, which averages the forces at the
@@ -324,6 +326,49 @@ namespace ndda
        * candidates of detect() to the contacts of a step.
        */
       /** @{ */
+
+      /**
+       * The cells' shape functions along the three edges of the reference
+       * triangle: for the edge that starts at local vertex k, the local
+       * dofs whose functions do not vanish on it, and their values at
+       * degree + 1 equispaced points, which interpolate them exactly
+       * (doc/contact.md, "Kernels").
+       */
+      struct EdgeShapes
+      {
+        /**
+         * Sample the shape functions of @p fe; checks the interpolation
+         * at two more points and falls back to direct evaluation on all
+         * dofs where it does not hold.
+         */
+        void
+        initialize(const dealii::FiniteElement<2> &fe);
+
+        /** The local dofs of the edge from local vertex @p k. */
+        const std::vector<unsigned int> &
+        dofs(const unsigned int k) const
+        {
+          return edge_dofs[k];
+        }
+
+        /**
+         * The values at the point @p c in [0, 1] along the edge from
+         * local vertex @p k of the functions of dofs(k), to @p values.
+         */
+        void
+        values(const unsigned int k, const double c, double *values) const;
+
+      private:
+        /// Sampled up to degree 7; higher degrees are evaluated directly.
+        static constexpr unsigned int max_points = 8;
+
+        const dealii::FiniteElement<2>          *fe       = nullptr;
+        unsigned int                             n_points = 0;
+        bool                                     sampled  = false;
+        std::array<std::vector<unsigned int>, 3> edge_dofs;
+        /// Per edge, per dof of edge_dofs, n_points values.
+        std::array<std::vector<double>, 3> samples;
+      };
 
       /** The option of @p vertex against @p edge on the @p vertices. */
       Option
@@ -605,6 +650,8 @@ namespace ndda
       std::vector<double>                    edge_friction;
       std::vector<double>                    vertex_friction;
       std::vector<std::vector<unsigned int>> edges_at_vertex;
+      /// The shape functions along the edges, for the options.
+      EdgeShapes edge_shapes;
       /// Detection's broad phase, kept while the vertices move little.
       NeighbourList neighbours;
       /// Mean boundary edge length of every block (m).

@@ -12,6 +12,8 @@
 #include <ndda/base/plugin_registry.h>
 #include <ndda/contact/contact_parameters.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -112,10 +114,13 @@ namespace ndda
       /// outside), less the contact's offset once a contact has chosen
       /// this option.
       double gap;
-      /// Dofs of the vertex, then of the edge's cell.
-      std::vector<global_dof_index> dofs;
+      /// Dofs of the vertex, then of the nodes of the edge's cell whose
+      /// shape functions do not vanish on the edge (its two vertices with
+      /// P1, and its midpoint with P2): on the others e_n and e_t are 0.
+      /// Kept in place up to P2 (no allocation per option).
+      boost::container::small_vector<global_dof_index, 8> dofs;
       /// Gap operators e_n and e_t on those dofs.
-      std::vector<double> wn, wt;
+      boost::container::small_vector<double, 8> wn, wt;
 
       /** The normal gap g(d) = gap + e_n . d after the increment @p d. */
       double

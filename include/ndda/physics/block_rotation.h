@@ -2,6 +2,8 @@
 #ifndef ndda_physics_block_rotation_h
 #define ndda_physics_block_rotation_h
 
+#include <deal.II/base/array_view.h>
+
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -147,7 +149,7 @@ namespace ndda
      * components, turned into the frames of its nodes.
      */
     void
-    turn(const std::vector<index> &dofs, FullMatrix<double> &k) const;
+    turn(const ArrayView<const index> &dofs, FullMatrix<double> &k) const;
 
   private:
     /** Refresh the nodes' cos and sin from the cells' angles. */

@@ -3,6 +3,8 @@
 #define ndda_physics_linear_system_h
 
 
+#include <deal.II/base/array_view.h>
+
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -47,7 +49,7 @@ namespace ndda
     /** Adds a dense block of springs on the dofs of its first argument
      * to the system (in the blocks' frames, see solve()). */
     using BlockAdder =
-      std::function<void(const std::vector<types::global_dof_index> &,
+      std::function<void(const ArrayView<const types::global_dof_index> &,
                          const FullMatrix<double> &)>;
 
     /** Adds springs (the contacts') as dense blocks through a BlockAdder
@@ -273,8 +275,8 @@ namespace ndda
      * added, not entry by entry).
      */
     void
-    add_to_compact(const std::vector<types::global_dof_index> &dofs,
-                   const FullMatrix<double>                   &k);
+    add_to_compact(const ArrayView<const types::global_dof_index> &dofs,
+                   const FullMatrix<double>                       &k);
 
     /** Solve the changed condensed system for @p b into @p d: GMRES with
      * the last factorization, or a new factorization (of a system with
