@@ -243,9 +243,7 @@ namespace ndda
           auto last = first;
           while (last != candidates.end() && last->vertex == first->vertex)
             ++last;
-          const std::vector<VertexEdge> touched =
-            touched_edges(vertices, first, last);
-          vertex_edge.insert(vertex_edge.end(), touched.begin(), touched.end());
+          touched_edges(vertices, first, last, vertex_edge);
           first = last;
         }
       return vertex_edge;
@@ -253,13 +251,13 @@ namespace ndda
 
 
 
-    std::vector<ContactHandler::VertexEdge>
-    ContactHandler::touched_edges(
-      const std::vector<Point<2>>           &vertices,
-      std::vector<Candidate>::const_iterator first,
-      std::vector<Candidate>::const_iterator last) const
+    void
+    ContactHandler::touched_edges(const std::vector<Point<2>> &vertices,
+                                  std::vector<Candidate>::const_iterator first,
+                                  std::vector<Candidate>::const_iterator last,
+                                  std::vector<VertexEdge> &touched) const
     {
-      std::vector<const Candidate *> list;
+      boost::container::small_vector<const Candidate *, 8> list;
       for (auto c = first; c != last; ++c)
         {
           if (c->type != CandidateType::vertex_edge ||
@@ -271,7 +269,7 @@ namespace ndda
             continue;
           list.push_back(&*c);
         }
-      std::vector<bool> dropped(list.size(), false);
+      boost::container::small_vector<bool, 8> dropped(list.size(), false);
       for (unsigned int a = 0; a < list.size(); ++a)
         for (unsigned int b = a + 1; b < list.size(); ++b)
           {
@@ -297,11 +295,9 @@ namespace ndda
               (ra != rb) ? rb : list[a]->distance < list[b]->distance;
             dropped[drop_a ? a : b] = true;
           }
-      std::vector<VertexEdge> touched;
       for (unsigned int a = 0; a < list.size(); ++a)
         if (!dropped[a])
           touched.emplace_back(list[a]->vertex, list[a]->edge);
-      return touched;
     }
 
 
@@ -342,12 +338,12 @@ namespace ndda
 
 
 
-    std::set<std::pair<unsigned int, unsigned int>>
+    std::vector<std::pair<unsigned int, unsigned int>>
     ContactHandler::vertex_vertex_pairs(
       const std::vector<Candidate>  &candidates,
       const std::vector<VertexEdge> &vertex_edge) const
     {
-      std::set<std::pair<unsigned int, unsigned int>> pairs;
+      std::vector<std::pair<unsigned int, unsigned int>> pairs;
       for (const Candidate &c : candidates)
         if (c.type == CandidateType::vertex_vertex)
           {
@@ -356,8 +352,10 @@ namespace ndda
             if (in_cell(c.vertex, c.edge) ||
                 has_vertex_edge_at(vertex_edge, c.vertex, corner))
               continue;
-            pairs.insert(std::minmax(c.vertex, corner));
+            pairs.push_back(std::minmax(c.vertex, corner));
           }
+      std::sort(pairs.begin(), pairs.end());
+      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
       return pairs;
     }
 

@@ -23,10 +23,11 @@ namespace ndda
 }
 
 #include <array>
+#include <cstdint>
 #include <functional>
-#include <map>
-#include <set>
 #include <tuple>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -269,7 +270,7 @@ namespace ndda
       {
         /// Potential (vertex, edge) pairs: one for a vertex-edge contact,
         /// the edges at either vertex for a vertex-vertex pair.
-        std::vector<Option> options;
+        boost::container::small_vector<Option, 1> options;
         /// The chosen option, or invalid while a vertex-vertex pair is
         /// unresolved.
         unsigned int chosen = invalid;
@@ -314,8 +315,25 @@ namespace ndda
 
       static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
+      /** A vertex and the two vertices of an edge, or two vertices. */
+      using Key = std::tuple<unsigned int, unsigned int, unsigned int>;
+
+      /** A hash of a Key for the step-to-step memory. */
+      struct KeyHash
+      {
+        std::size_t
+        operator()(const Key &k) const
+        {
+          const std::uint64_t h =
+            (std::uint64_t(std::get<0>(k)) * 0x9E3779B97F4A7C15ull) ^
+            (std::uint64_t(std::get<1>(k)) * 0xC2B2AE3D27D4EB4Full) ^
+            (std::uint64_t(std::get<2>(k)) * 0x165667B19E3779F9ull);
+          return static_cast<std::size_t>(h ^ (h >> 29));
+        }
+      };
+
       /** Key of a (vertex, edge) pair that survives renumbered edges. */
-      std::tuple<unsigned int, unsigned int, unsigned int>
+      Key
       key(const unsigned int vertex, const unsigned int edge) const
       {
         return {vertex, edges[edge].v0, edges[edge].v1};
@@ -421,12 +439,13 @@ namespace ndda
        * face of a thin block). A vertex near a convex (or straight) corner
        * of a boundary may project into both edges there; it then touches
        * one of them: the remembered one, else the one it is farther
-       * outside of.
+       * outside of. They are appended to @p touched.
        */
-      std::vector<VertexEdge>
+      void
       touched_edges(const std::vector<Point<2>>           &vertices,
                     std::vector<Candidate>::const_iterator first,
-                    std::vector<Candidate>::const_iterator last) const;
+                    std::vector<Candidate>::const_iterator last,
+                    std::vector<VertexEdge>               &touched) const;
 
       /** Add a vertex-edge contact for each of @p vertex_edge. */
       void
@@ -443,12 +462,12 @@ namespace ndda
                          const unsigned int             corner) const;
 
       /**
-       * The vertex pairs (smaller index first) of the vertex_vertex
+       * The vertex pairs (smaller index first, sorted) of the vertex_vertex
        * candidates: a vertex and the end point of the edge closest to it,
        * unless the vertex belongs to the edge's cell or already touches an
        * edge at that end point (the vertex-edge contact holds the pair).
        */
-      std::set<std::pair<unsigned int, unsigned int>>
+      std::vector<std::pair<unsigned int, unsigned int>>
       vertex_vertex_pairs(const std::vector<Candidate>  &candidates,
                           const std::vector<VertexEdge> &vertex_edge) const;
 
@@ -658,13 +677,12 @@ namespace ndda
       std::vector<double>                                block_edge_length;
       std::vector<ContactPair>                           contacts;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
-      std::map<std::tuple<unsigned int, unsigned int, unsigned int>, Memory>
-        memory;
+      /// What each contact of the last step left (looked up by key only).
+      std::unordered_map<Key, Memory, KeyHash> memory;
       /// Vertex-edge contacts that ended the last step open: one that
       /// touches at the start of the next step starts it open too.
-      std::set<std::tuple<unsigned int, unsigned int, unsigned int>>
-                        open_last_step;
-      ContactStatistics statistics;
+      std::unordered_set<Key, KeyHash> open_last_step;
+      ContactStatistics                statistics;
       /// No step accepted yet: contacts that touch now are bonded.
       bool first_step = true;
       /// Forces of all springs at the end of the last accepted step.
