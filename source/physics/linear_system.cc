@@ -124,6 +124,7 @@ namespace ndda
             }
         expansion_start[i + 1] = expansion_column.size();
       }
+    scratch.slot.assign(free_dofs.size(), numbers::invalid_unsigned_int);
   }
 
 
@@ -138,15 +139,21 @@ namespace ndda
     // blocks are small (8 x 8 to 14 x 14): plain loops, no allocation.
     const unsigned int n       = dofs.size();
     auto              &columns = scratch.columns;
+    auto              &slot    = scratch.slot;
     columns.clear();
     for (const auto i : dofs)
       for (auto e = expansion_start[i]; e < expansion_start[i + 1]; ++e)
-        columns.push_back(expansion_column[e]);
-    std::sort(columns.begin(), columns.end());
-    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+        if (slot[expansion_column[e]] == numbers::invalid_unsigned_int)
+          {
+            slot[expansion_column[e]] = columns.size();
+            columns.push_back(expansion_column[e]);
+          }
     const unsigned int m = columns.size();
     if (m == 0)
       return;
+    std::sort(columns.begin(), columns.end());
+    for (unsigned int a = 0; a < m; ++a)
+      slot[columns[a]] = a;
     auto &start    = scratch.row_start;
     auto &position = scratch.position;
     auto &weight   = scratch.weight;
@@ -159,10 +166,7 @@ namespace ndda
              e < expansion_start[dofs[i] + 1];
              ++e)
           {
-            position.push_back(std::lower_bound(columns.begin(),
-                                                columns.end(),
-                                                expansion_column[e]) -
-                               columns.begin());
+            position.push_back(slot[expansion_column[e]]);
             weight.push_back(expansion_weight[e]);
           }
         start.push_back(position.size());
@@ -188,6 +192,8 @@ namespace ndda
     for (unsigned int a = 0; a < m; ++a)
       compact_matrix.add(
         columns[a], m, columns.data(), &tkt[a * m], false, true);
+    for (const auto c : columns)
+      slot[c] = numbers::invalid_unsigned_int;
   }
 
 

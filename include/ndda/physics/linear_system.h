@@ -258,6 +258,9 @@ namespace ndda
     struct
     {
       std::vector<types::global_dof_index> columns;
+      /// Per compact unknown, its position in columns while a block is
+      /// added, else invalid.
+      std::vector<unsigned int> slot;
       /// T in sparse rows: the expansion entries of the block's dofs, with
       /// their positions in columns.
       std::vector<unsigned int> row_start, position;
