@@ -13,7 +13,6 @@
 #include <ndda/contact/contact_parameters.h>
 
 #include <boost/container/small_vector.hpp>
-
 #include <memory>
 #include <string>
 #include <vector>
@@ -428,7 +427,7 @@ namespace ndda
     /** Name of the law ContactHandler uses when ContactSettings has none. */
     inline const std::string default_contact_law = "penalty Coulomb";
 
-  }   // namespace contact
+  } // namespace contact
 } // namespace ndda
 
 /**
@@ -439,9 +438,6 @@ namespace ndda
  * end of the law's `.cc` file, inside the namespace of @p classname.
  */
 #define NDDA_REGISTER_CONTACT_LAW(classname, name, description) \
-  NDDA_REGISTER_PLUGIN(ndda::contact::ContactLaw,               \
-                       classname,                               \
-                       name,                                    \
-                       description)
+  NDDA_REGISTER_PLUGIN(ndda::contact::ContactLaw, classname, name, description)
 
 #endif
