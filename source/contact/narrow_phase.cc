@@ -57,7 +57,7 @@ namespace ndda
     {
       fe               = &fe_in;
       n_points         = fe->degree + 1;
-      sampled          = n_points <= max_points;
+      sampled          = fe->degree >= 1 && n_points <= max_points;
       const auto point = [](const unsigned int k, const double c) {
         return Point<2>(unit_vertex[k] +
                         c * (unit_vertex[(k + 1) % 3] - unit_vertex[k]));
