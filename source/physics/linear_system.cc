@@ -487,11 +487,26 @@ namespace ndda
     if (iterations == 0)
       {
         base_factorized = !springs;
+        reuse_spent     = 0;
+        reuse_fewest    = numbers::invalid_unsigned_int;
         iterations      = compact_solve(b, d, true, 0);
       }
-    else if (2 * iterations > linear_solver->reuse_limit(reuse_iterations))
-      // Converging slowly: the factorization has aged.
-      refactorize_next = true;
+    else
+      {
+        // The factorization has aged when one solve converges slowly, or
+        // when the iterations spent with it beyond the fewest a solve with
+        // it took (what a new factorization could bring them back to) have
+        // come to what a new one costs: reuse then costs at most about
+        // twice what the best choice of factorizations would have (the
+        // ski-rental argument). A system that changes by as much in every
+        // step (a turning block whose matrices are rebuilt) keeps its
+        // factorization.
+        reuse_fewest = std::min(reuse_fewest, iterations);
+        reuse_spent += iterations - reuse_fewest;
+        if (2 * iterations > linear_solver->reuse_limit(reuse_iterations) ||
+            reuse_spent > linear_solver->solves_per_factorization())
+          refactorize_next = true;
+      }
     return iterations;
   }
 

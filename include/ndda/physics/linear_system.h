@@ -314,6 +314,12 @@ namespace ndda
     /// The last GMRES solve with an earlier factorization converged slowly:
     /// factorize the next changed system.
     bool refactorize_next = false;
+    /// GMRES iterations taken with the present factorization since it was
+    /// made, beyond the fewest that one solve with it took.
+    double reuse_spent = 0;
+    /// The fewest GMRES iterations of a solve with the present
+    /// factorization.
+    unsigned int reuse_fewest = numbers::invalid_unsigned_int;
   };
 } // namespace ndda
 
