@@ -21,7 +21,11 @@ namespace ndda
       const std::vector<std::shared_ptr<const Postprocessor>> &postprocessors)
     {
       const auto &output = simulator.get_parameters().output;
-      DataOut<2>  data_out;
+      // Nothing is written: no patches to build (they cost as much as a
+      // time step of a small scene).
+      if (!output.write_vtu && !output.write_hdf5)
+        return;
+      DataOut<2> data_out;
       Frame frame(data_out, output_number, output.write_vtu, output.directory);
       data_out.attach_dof_handler(simulator.get_dof_handler());
       for (const auto &postprocessor : postprocessors)

@@ -27,12 +27,13 @@ namespace ndda
     public:
       /**
        * Write the frame of the present state of @p simulator with the
-       * fields of @p postprocessors, in Output/Directory.
+       * fields of @p postprocessors, in Output/Directory (VTU and
+       * HDF5, as Output/Write vtu and Write hdf5 ask; nothing if neither).
        */
       void
-      write_frame(
-        const Simulator<2>                                      &simulator,
-        const std::vector<std::shared_ptr<const Postprocessor>> &postprocessors);
+      write_frame(const Simulator<2> &simulator,
+                  const std::vector<std::shared_ptr<const Postprocessor>>
+                    &postprocessors);
 
       /** Frames written so far. */
       unsigned int
