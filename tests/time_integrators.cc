@@ -374,6 +374,31 @@ end
     check(crawl.find("Step 1000 at t = ") != std::string::npos &&
             crawl.find(": 1000 steps in a row were cut") != std::string::npos,
           "message of the crawl guard");
+
+    // Cut after cut to below 1e-6 of the step: the message names the
+    // cause, and only a displacement that stays too large is a diverging
+    // motion.
+    StepController::Limits many_cuts = limits;
+    many_cuts.max_cuts               = 100;
+    const auto smallest              = [&](const AttemptResult result) {
+      StepController controller(many_cuts);
+      controller.begin_step(9, 0.5);
+      return message_of([&]() {
+        double size = 0.1;
+        for (;;)
+          size = controller.after_failure(result, size, 1e-15);
+      });
+    };
+    const std::string unsettled = smallest(AttemptResult::not_settled);
+    const std::string diverging = smallest(AttemptResult::too_large);
+    std::cout << "  smallest step, not settled: " << unsettled << std::endl
+              << "  smallest step, too large: " << diverging << std::endl;
+    check(unsettled.find("raise Contact/Open-close iterations") !=
+              std::string::npos &&
+            unsettled.find("diverging") == std::string::npos &&
+            diverging.find("the motion is diverging (the largest") !=
+              std::string::npos,
+          "message of the smallest step names its cause");
   }
 
 

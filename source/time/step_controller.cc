@@ -107,15 +107,24 @@ namespace ndda
       const double next = 0.5 * dt;
       // Steps that each need a cut shrink the step without bound when the
       // motion diverges: stop rather than crawl.
-      AssertThrow(next >= smallest_step * limits.nominal_step,
-                  ExcMessage(
-                    where() +
-                    "the step size fell below 1e-6 of Control/Time step "
-                    "after cuts in step after step; the motion is "
-                    "diverging (largest increment " +
-                    to_string(max_increment) +
-                    " m). Look at the last output and the statistics "
-                    "file; see doc/contact.md, 'Known limits'."));
+      // An open-close iteration that needs more solves than allowed
+      // fails at every size as well: the message names which it is.
+      AssertThrow(
+        next >= smallest_step * limits.nominal_step,
+        ExcMessage(
+          where() +
+          "the step size fell below 1e-6 of Control/Time step after cuts "
+          "in step after step" +
+          (result == AttemptResult::not_settled ?
+             ": " + reason + " at every size tried (largest increment " +
+               to_string(max_increment) +
+               " m). Smaller steps do not help a scene whose contact "
+               "states take more solves to settle (many contacts, "
+               "loads passed on from course to course): raise "
+               "Contact/Open-close iterations." :
+             "; the motion is diverging (" + reason + ").") +
+          " Look at the last output and the statistics file; see "
+          "doc/contact.md, 'Known limits'."));
       return next;
     }
 
