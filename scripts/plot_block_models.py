@@ -24,6 +24,8 @@ import sys
 # model, bricks, DoFs, ms/step, median, us/brick, then the counts per step
 ROW = re.compile(r"^\s*(meshed|affine|rigid)\s+(\d+)\s+(\d+)\s+([\d.]+)"
                  r"\s+([\d.]+)\s+([\d.]+)(\s+[\d.]+)+\s*$")
+# How the runs started (the benchmark's first line), for the title.
+STARTS = set()
 STYLE = {"meshed": ("o-", "tab:blue"), "affine": ("s-", "tab:orange"),
          "rigid": ("^-", "tab:green")}
 
@@ -36,6 +38,10 @@ def read_rows(paths):
     for path in paths:
         with open(path) as f:
             for line in f:
+                if "gravity was ramped" in line:
+                    STARTS.add("settled walls (gravity ramped up)")
+                elif "gravity switched on at t = 0" in line:
+                    STARTS.add("gravity switched on at t = 0")
                 m = ROW.match(line)
                 if m:
                     model, bricks = m.group(1), int(m.group(2))
@@ -78,8 +84,9 @@ def plot(rows, out):
     for ax in (left, right):
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8)
-    fig.suptitle("Staggered brick walls, DDA, dt = 2 ms "
-                 "(benchmarks/block_models.cc)", fontsize=10)
+    fig.suptitle("Staggered brick walls, DDA, dt = 2 ms"
+                 + "".join(", " + s for s in sorted(STARTS))
+                 + " (benchmarks/block_models.cc)", fontsize=10)
     fig.tight_layout()
     fig.savefig(out, dpi=100)
 
