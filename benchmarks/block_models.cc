@@ -48,7 +48,6 @@
 
 namespace
 {
-  /** The wall scene of @p courses courses of @p length bricks. */
   /** Young's modulus and density of the bricks. */
   constexpr double youngs_modulus = 10e9, density = 2600;
 
