@@ -150,7 +150,8 @@ namespace ndda
     void
     ContactHandler::assemble(
       const std::function<
-        void(const dealii::ArrayView<const dealii::types::global_dof_index> &,
+        void(const unsigned int,
+             const dealii::ArrayView<const dealii::types::global_dof_index> &,
              const dealii::FullMatrix<double> &)> &add,
       dealii::Vector<double>                      &rhs) const
     {
@@ -177,7 +178,7 @@ namespace ndda
                 }
               if (turned)
                 frames->turn(ab, k);
-              add(ab, k);
+              add(&c - contacts.data(), ab, k);
               continue;
             }
           if (c.state == State::open || c.chosen == invalid)
@@ -190,7 +191,7 @@ namespace ndda
             option_dofs(o.dofs.data(), n);
           if (turned)
             frames->turn(option_dofs, k);
-          add(option_dofs, k);
+          add(&c - contacts.data(), option_dofs, k);
         }
     }
 

@@ -94,6 +94,7 @@ namespace ndda
     compact_pattern.copy_from(compact_dsp);
     compact_base.reinit(compact_pattern);
     compact_matrix.reinit(compact_pattern);
+    compact_plans.clear();
     setup_expansion(affine);
   }
 
@@ -130,16 +131,16 @@ namespace ndda
 
 
   void
-  LinearSystem::add_to_compact(
+  LinearSystem::make_compact_plan(
     const ArrayView<const types::global_dof_index> &dofs,
-    const FullMatrix<double>                       &k)
+    CompactPlan                                    &plan)
   {
     // The compact unknowns the block touches (sorted), and T (n x m) in
-    // sparse rows: a dof expands to one to a few compact unknowns. The
-    // blocks are small (8 x 8 to 14 x 14): plain loops, no allocation.
-    const unsigned int n       = dofs.size();
-    auto              &columns = scratch.columns;
-    auto              &slot    = scratch.slot;
+    // sparse rows: a dof expands to one to a few compact unknowns.
+    const unsigned int n = dofs.size();
+    plan.dofs.assign(dofs.begin(), dofs.end());
+    auto &columns = scratch.columns;
+    auto &slot    = scratch.slot;
     columns.clear();
     for (const auto i : dofs)
       for (auto e = expansion_start[i]; e < expansion_start[i + 1]; ++e)
@@ -149,28 +150,61 @@ namespace ndda
             columns.push_back(expansion_column[e]);
           }
     const unsigned int m = columns.size();
-    if (m == 0)
-      return;
+    plan.m               = m;
     std::sort(columns.begin(), columns.end());
     for (unsigned int a = 0; a < m; ++a)
       slot[columns[a]] = a;
-    auto &start    = scratch.row_start;
-    auto &position = scratch.position;
-    auto &weight   = scratch.weight;
-    start.assign(1, 0);
-    position.clear();
-    weight.clear();
+    plan.row_start.assign(1, 0);
+    plan.position.clear();
+    plan.weight.clear();
     for (unsigned int i = 0; i < n; ++i)
       {
         for (auto e = expansion_start[dofs[i]];
              e < expansion_start[dofs[i] + 1];
              ++e)
           {
-            position.push_back(slot[expansion_column[e]]);
-            weight.push_back(expansion_weight[e]);
+            plan.position.push_back(slot[expansion_column[e]]);
+            plan.weight.push_back(expansion_weight[e]);
           }
-        start.push_back(position.size());
+        plan.row_start.push_back(plan.position.size());
       }
+    // Where the m x m entries are among the compact matrix's values (the
+    // contact couplings are in its pattern: a missing one is an error).
+    plan.entries.resize(m * m);
+    for (unsigned int a = 0; a < m; ++a)
+      for (unsigned int b = 0; b < m; ++b)
+        {
+          const auto entry = compact_pattern(columns[a], columns[b]);
+          Assert(entry != SparsityPattern::invalid_entry, ExcInternalError());
+          plan.entries[a * m + b] = entry;
+        }
+    for (const auto c : columns)
+      slot[c] = numbers::invalid_unsigned_int;
+  }
+
+
+
+  void
+  LinearSystem::add_to_compact(
+    const unsigned int                              key,
+    const ArrayView<const types::global_dof_index> &dofs,
+    const FullMatrix<double>                       &k)
+  {
+    // The blocks are small (6 x 6 to 14 x 14): plain loops, no allocation
+    // once the plans are made.
+    if (key >= compact_plans.size())
+      compact_plans.resize(key + 1);
+    CompactPlan       &plan = compact_plans[key];
+    const unsigned int n    = dofs.size();
+    if (plan.dofs.size() != n ||
+        !std::equal(dofs.begin(), dofs.end(), plan.dofs.begin()))
+      make_compact_plan(dofs, plan);
+    const unsigned int m = plan.m;
+    if (m == 0)
+      return;
+    const auto &start    = plan.row_start;
+    const auto &position = plan.position;
+    const auto &weight   = plan.weight;
     // k t (n x m), then t^T k t (m x m).
     auto &kt = scratch.kt;
     kt.assign(n * m, 0.);
@@ -189,11 +223,12 @@ namespace ndda
           for (unsigned int b = 0; b < m; ++b)
             row[b] += w * kt[i * m + b];
         }
-    for (unsigned int a = 0; a < m; ++a)
-      compact_matrix.add(
-        columns[a], m, columns.data(), &tkt[a * m], false, true);
-    for (const auto c : columns)
-      slot[c] = numbers::invalid_unsigned_int;
+    // The values of a SparseMatrix are one array in the order of its
+    // pattern's entries; the diagonal of row 0 is its first.
+    Assert(compact_pattern(0, 0) == 0, ExcInternalError());
+    double *const values = &compact_matrix.diag_element(0);
+    for (unsigned int e = 0; e < m * m; ++e)
+      values[plan.entries[e]] += tkt[e];
   }
 
 
@@ -416,13 +451,14 @@ namespace ndda
         else
           condensed_matrix.copy_from(condensed_base);
         add_springs(
-          [&](const ArrayView<const types::global_dof_index> &dofs,
+          [&](const unsigned int                              key,
+              const ArrayView<const types::global_dof_index> &dofs,
               const FullMatrix<double>                       &k) {
             // Through the lines where a dof has one (deal.II's sorting
             // costs more than the add), else added row by row; straight
             // into the compact system if there is one.
             if (compact)
-              add_to_compact(dofs, k);
+              add_to_compact(key, dofs, k);
             else if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
                        return affine.is_constrained(i);
                      }))

@@ -176,14 +176,15 @@ namespace ndda
 
       /**
        * Add the springs of the present states through @p add, one dense
-       * block per contact, in the blocks' frames (Q^T S Q, see
-       * set_frames()), and their forces at d = 0 to @p rhs, in global
-       * components.
+       * block per contact with the contact's index as its number, in the
+       * blocks' frames (Q^T S Q, see set_frames()), and their forces at
+       * d = 0 to @p rhs, in global components.
        */
       void
       assemble(
         const std::function<
-          void(const dealii::ArrayView<const dealii::types::global_dof_index> &,
+          void(const unsigned int,
+               const dealii::ArrayView<const dealii::types::global_dof_index> &,
                const dealii::FullMatrix<double> &)> &add,
         dealii::Vector<double>                      &rhs) const;
 

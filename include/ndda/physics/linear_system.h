@@ -46,10 +46,15 @@ namespace ndda
   class LinearSystem
   {
   public:
-    /** Adds a dense block of springs on the dofs of its first argument
-     * to the system (in the blocks' frames, see solve()). */
+    /** Adds a dense block of springs on the dofs of its second argument
+     * to the system (in the blocks' frames, see solve()). The first
+     * argument is a number that the caller gives the same block in every
+     * solve (a contact's index): under it the system keeps how the block
+     * is added to the compact system, and makes that anew only when the
+     * block's dofs differ from those it was made for. */
     using BlockAdder =
-      std::function<void(const ArrayView<const types::global_dof_index> &,
+      std::function<void(const unsigned int,
+                         const ArrayView<const types::global_dof_index> &,
                          const FullMatrix<double> &)>;
 
     /** Adds springs (the contacts') as dense blocks through a BlockAdder
@@ -254,18 +259,36 @@ namespace ndda
     std::vector<unsigned int>            expansion_start;
     std::vector<types::global_dof_index> expansion_column;
     std::vector<double>                  expansion_weight;
+    /// How a block of springs is added to the compact matrix
+    /// (add_to_compact()), kept from solve to solve under the caller's
+    /// number for the block: the dofs it was made for; T, their expansion
+    /// in the block's m compact unknowns, in sparse rows (the expansion
+    /// entries of each dof with their positions among the m); and the
+    /// positions of the m x m entries in the compact matrix's values.
+    struct CompactPlan
+    {
+      std::vector<types::global_dof_index> dofs;
+      unsigned int                         m = 0;
+      std::vector<unsigned int>            row_start, position;
+      std::vector<double>                  weight;
+      std::vector<std::size_t>             entries;
+    };
+    /// The plans by the callers' numbers; cleared with the compact pattern.
+    std::vector<CompactPlan> compact_plans;
     /// Buffers of add_to_compact().
     struct
     {
       std::vector<types::global_dof_index> columns;
-      /// Per compact unknown, its position in columns while a block is
-      /// added, else invalid.
+      /// Per compact unknown, its position in columns while a plan is
+      /// made, else invalid.
       std::vector<unsigned int> slot;
-      /// T in sparse rows: the expansion entries of the block's dofs, with
-      /// their positions in columns.
-      std::vector<unsigned int> row_start, position;
-      std::vector<double>       weight, kt, tkt;
+      std::vector<double>       kt, tkt;
     } scratch;
+
+    /** Make @p plan for a block on @p dofs. */
+    void
+    make_compact_plan(const ArrayView<const types::global_dof_index> &dofs,
+                      CompactPlan                                    &plan);
 
     /** The expansion of every dof in compact unknowns (reinit). */
     void
@@ -275,10 +298,11 @@ namespace ndda
      * Add the dense spring block @p k on the dofs @p dofs to the compact
      * matrix through the expansion: T^T k T, T the expansion of the dofs
      * (the lines of the reduced blocks applied to the block before it is
-     * added, not entry by entry).
+     * added, not entry by entry), by the plan kept under @p key.
      */
     void
-    add_to_compact(const ArrayView<const types::global_dof_index> &dofs,
+    add_to_compact(const unsigned int                              key,
+                   const ArrayView<const types::global_dof_index> &dofs,
                    const FullMatrix<double>                       &k);
 
     /** Solve the changed condensed system for @p b into @p d: GMRES with
