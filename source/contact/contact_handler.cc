@@ -73,6 +73,7 @@ namespace ndda
     ContactHandler::set_normal_stiffness(const double k)
     {
       settings.normal_stiffness = k;
+      assembled.clear();
     }
 
 
@@ -83,6 +84,7 @@ namespace ndda
     {
       statistics.n_iterations = 0;
       contacts.clear();
+      assembled.clear();
       couplings.clear();
       if (block_edge_length.empty())
         measure_block_edges(vertices); // on the first step's geometry
@@ -124,6 +126,7 @@ namespace ndda
     ContactHandler::restart_step()
     {
       statistics.n_iterations = 0;
+      assembled.clear();
       for (ContactPair &c : contacts)
         {
           c.flips                        = 0;
@@ -150,9 +153,9 @@ namespace ndda
     void
     ContactHandler::assemble(
       const std::function<
-        void(const unsigned int,
+        bool(const unsigned int,
              const dealii::ArrayView<const dealii::types::global_dof_index> &,
-             const dealii::FullMatrix<double> &)> &add,
+             const dealii::FullMatrix<double> *)> &add,
       dealii::Vector<double>                      &rhs) const
     {
       const double kn = settings.normal_stiffness;
@@ -161,8 +164,21 @@ namespace ndda
       dealii::FullMatrix<double> k;
       const bool                 turned = frames != nullptr && frames->turned();
       std::vector<dealii::types::global_dof_index> ab(4);
-      for (const ContactPair &c : contacts)
+      if (assembled.size() != contacts.size())
+        assembled.assign(contacts.size(), Assembled());
+      for (unsigned int i = 0; i < contacts.size(); ++i)
         {
+          const ContactPair &c    = contacts[i];
+          Assembled         &last = assembled[i];
+          // The block depends on the contact's state, option and scale
+          // only (the options and the frames stay within a step).
+          const bool same = last.valid && last.state.state == c.state &&
+                            last.state.anchor == c.anchor &&
+                            last.state.sign == c.sign &&
+                            last.state.friction == c.friction &&
+                            last.state.bond_length == c.bond_length &&
+                            last.chosen == c.chosen && last.scale == c.scale &&
+                            last.bonded == c.bonded;
           if (c.state == State::vertex_spring)
             {
               // Thesis 6.5-6.12: a spring on the relative displacement of
@@ -170,28 +186,39 @@ namespace ndda
               const auto &da = dofs->vertex_dofs[c.vertex_a];
               const auto &db = dofs->vertex_dofs[c.vertex_b];
               ab             = {da[0], da[1], db[0], db[1]};
+              if (same && add(i, ab, nullptr))
+                continue;
               k.reinit(4, 4);
-              for (unsigned int i = 0; i < 4; ++i)
+              for (unsigned int j = 0; j < 4; ++j)
                 {
-                  k(i, i)           = kn;
-                  k(i, (i + 2) % 4) = -kn;
+                  k(j, j)           = kn;
+                  k(j, (j + 2) % 4) = -kn;
                 }
               if (turned)
                 frames->turn(ab, k);
-              add(&c - contacts.data(), ab, k);
-              continue;
+              add(i, ab, &k);
             }
-          if (c.state == State::open || c.chosen == invalid)
-            continue;
-          const Option      &o = c.options[c.chosen];
-          const unsigned int n = o.dofs.size();
-          k.reinit(n, n);
-          settings.law->add_springs(o, c, c.scale, settings, &k, rhs);
-          const dealii::ArrayView<const dealii::types::global_dof_index>
-            option_dofs(o.dofs.data(), n);
-          if (turned)
-            frames->turn(option_dofs, k);
-          add(&c - contacts.data(), option_dofs, k);
+          else
+            {
+              if (c.state == State::open || c.chosen == invalid)
+                continue;
+              const Option      &o = c.options[c.chosen];
+              const unsigned int n = o.dofs.size();
+              const dealii::ArrayView<const dealii::types::global_dof_index>
+                option_dofs(o.dofs.data(), n);
+              if (same && add(i, option_dofs, nullptr))
+                {
+                  settings.law->add_springs(
+                    o, c, c.scale, settings, nullptr, rhs);
+                  continue;
+                }
+              k.reinit(n, n);
+              settings.law->add_springs(o, c, c.scale, settings, &k, rhs);
+              if (turned)
+                frames->turn(option_dofs, k);
+              add(i, option_dofs, &k);
+            }
+          last = {true, c, c.chosen, c.scale, c.bonded};
         }
     }
 

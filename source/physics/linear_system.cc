@@ -139,8 +139,9 @@ namespace ndda
     // sparse rows: a dof expands to one to a few compact unknowns.
     const unsigned int n = dofs.size();
     plan.dofs.assign(dofs.begin(), dofs.end());
-    auto &columns = scratch.columns;
-    auto &slot    = scratch.slot;
+    plan.has_block = false;
+    auto &columns  = scratch.columns;
+    auto &slot     = scratch.slot;
     columns.clear();
     for (const auto i : dofs)
       for (auto e = expansion_start[i]; e < expansion_start[i + 1]; ++e)
@@ -184,11 +185,11 @@ namespace ndda
 
 
 
-  void
+  bool
   LinearSystem::add_to_compact(
     const unsigned int                              key,
     const ArrayView<const types::global_dof_index> &dofs,
-    const FullMatrix<double>                       &k)
+    const FullMatrix<double>                       *k)
   {
     // The blocks are small (6 x 6 to 14 x 14): plain loops, no allocation
     // once the plans are made.
@@ -198,37 +199,48 @@ namespace ndda
     const unsigned int n    = dofs.size();
     if (plan.dofs.size() != n ||
         !std::equal(dofs.begin(), dofs.end(), plan.dofs.begin()))
-      make_compact_plan(dofs, plan);
+      {
+        if (k == nullptr)
+          return false;
+        make_compact_plan(dofs, plan);
+      }
+    if (k == nullptr && !plan.has_block)
+      return false;
     const unsigned int m = plan.m;
     if (m == 0)
-      return;
-    const auto &start    = plan.row_start;
-    const auto &position = plan.position;
-    const auto &weight   = plan.weight;
-    // k t (n x m), then t^T k t (m x m).
-    auto &kt = scratch.kt;
-    kt.assign(n * m, 0.);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int l = 0; l < n; ++l)
-        if (const double kil = k(i, l); kil != 0.)
-          for (unsigned int q = start[l]; q < start[l + 1]; ++q)
-            kt[i * m + position[q]] += kil * weight[q];
-    auto &tkt = scratch.tkt;
-    tkt.assign(m * m, 0.);
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int q = start[i]; q < start[i + 1]; ++q)
-        {
-          const double w   = weight[q];
-          double      *row = &tkt[position[q] * m];
-          for (unsigned int b = 0; b < m; ++b)
-            row[b] += w * kt[i * m + b];
-        }
+      return true;
     // The values of a SparseMatrix are one array in the order of its
     // pattern's entries; the diagonal of row 0 is its first.
     Assert(compact_pattern(0, 0) == 0, ExcInternalError());
     double *const values = &compact_matrix.diag_element(0);
+    auto         &tkt    = plan.block;
+    if (k != nullptr)
+      {
+        const auto &start    = plan.row_start;
+        const auto &position = plan.position;
+        const auto &weight   = plan.weight;
+        // k t (n x m), then t^T k t (m x m).
+        auto &kt = scratch.kt;
+        kt.assign(n * m, 0.);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int l = 0; l < n; ++l)
+            if (const double kil = (*k)(i, l); kil != 0.)
+              for (unsigned int q = start[l]; q < start[l + 1]; ++q)
+                kt[i * m + position[q]] += kil * weight[q];
+        tkt.assign(m * m, 0.);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int q = start[i]; q < start[i + 1]; ++q)
+            {
+              const double w   = weight[q];
+              double      *row = &tkt[position[q] * m];
+              for (unsigned int b = 0; b < m; ++b)
+                row[b] += w * kt[i * m + b];
+            }
+        plan.has_block = true;
+      }
     for (unsigned int e = 0; e < m * m; ++e)
       values[plan.entries[e]] += tkt[e];
+    return true;
   }
 
 
@@ -453,27 +465,71 @@ namespace ndda
         add_springs(
           [&](const unsigned int                              key,
               const ArrayView<const types::global_dof_index> &dofs,
-              const FullMatrix<double>                       &k) {
+              const FullMatrix<double>                       *block) {
+            // Only blocks on dofs with prescribed increments add to A g
+            // (the others would add zeros).
+            const bool touches_g =
+              with_g && std::any_of(dofs.begin(), dofs.end(), [&](auto i) {
+                return g[i] != 0.;
+              });
+            // The compact system keeps T^T k T of each block (see
+            // add_to_compact()); else the block given is kept under its
+            // key, and a null block is the one kept, if it was on the same
+            // dofs.
+            const bool                keep = !compact || touches_g;
+            const FullMatrix<double> *k    = block;
+            if (keep)
+              {
+                if (key >= kept_blocks.size())
+                  kept_blocks.resize(key + 1);
+                KeptBlock &kept = kept_blocks[key];
+                if (block == nullptr)
+                  {
+                    if (kept.dofs.size() != dofs.size() ||
+                        !std::equal(dofs.begin(),
+                                    dofs.end(),
+                                    kept.dofs.begin()))
+                      return false;
+                  }
+                else
+                  {
+                    // Copied entry by entry: a FullMatrix assignment
+                    // allocates anew.
+                    const unsigned int n = dofs.size();
+                    kept.dofs.assign(dofs.begin(), dofs.end());
+                    if (kept.k.m() != n || kept.k.n() != n)
+                      kept.k.reinit(n, n);
+                    for (unsigned int i = 0; i < n; ++i)
+                      for (unsigned int j = 0; j < n; ++j)
+                        kept.k(i, j) = (*block)(i, j);
+                  }
+                k = &kept.k;
+              }
             // Through the lines where a dof has one (deal.II's sorting
-            // costs more than the add), else added row by row; straight
-            // into the compact system if there is one.
+            // costs more than the add), else added row by row.
             if (compact)
-              add_to_compact(key, dofs, k);
+              {
+                if (!add_to_compact(key,
+                                    dofs,
+                                    block == nullptr && !keep ? nullptr : k))
+                  return false;
+              }
             else if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
                        return affine.is_constrained(i);
                      }))
               affine.distribute_local_to_global(
-                k,
+                *k,
                 std::vector<types::global_dof_index>(dofs.begin(), dofs.end()),
                 condensed_matrix);
             else
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 condensed_matrix.add(
-                  dofs[i], dofs.size(), dofs.data(), &k(i, 0), false, false);
-            if (with_g)
+                  dofs[i], dofs.size(), dofs.data(), &(*k)(i, 0), false, false);
+            if (touches_g)
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 for (unsigned int j = 0; j < dofs.size(); ++j)
-                  ag[dofs[i]] += k(i, j) * g[dofs[j]];
+                  ag[dofs[i]] += (*k)(i, j) * g[dofs[j]];
+            return true;
           },
           b);
       }

@@ -178,14 +178,17 @@ namespace ndda
        * Add the springs of the present states through @p add, one dense
        * block per contact with the contact's index as its number, in the
        * blocks' frames (Q^T S Q, see set_frames()), and their forces at
-       * d = 0 to @p rhs, in global components.
+       * d = 0 to @p rhs, in global components. A contact whose state,
+       * option and scale are those of its last assembly in this step has
+       * the same block: @p add is asked to add the block it kept (a null
+       * block), and the law gives only the forces.
        */
       void
       assemble(
         const std::function<
-          void(const unsigned int,
+          bool(const unsigned int,
                const dealii::ArrayView<const dealii::types::global_dof_index> &,
-               const dealii::FullMatrix<double> &)> &add,
+               const dealii::FullMatrix<double> *)> &add,
         dealii::Vector<double>                      &rhs) const;
 
       /**
@@ -675,8 +678,19 @@ namespace ndda
       /// Detection's broad phase, kept while the vertices move little.
       NeighbourList neighbours;
       /// Mean boundary edge length of every block (m).
-      std::vector<double>                                block_edge_length;
-      std::vector<ContactPair>                           contacts;
+      std::vector<double>      block_edge_length;
+      std::vector<ContactPair> contacts;
+      /// What each contact's spring block was last assembled from in this
+      /// step (assemble(); emptied by begin_step() and restart_step()).
+      struct Assembled
+      {
+        bool         valid = false;
+        ContactState state;
+        unsigned int chosen = invalid;
+        double       scale  = 0;
+        bool         bonded = false;
+      };
+      mutable std::vector<Assembled>                     assembled;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       /// What each contact of the last step left (looked up by key only).
       std::unordered_map<Key, Memory, KeyHash> memory;

@@ -49,13 +49,16 @@ namespace ndda
     /** Adds a dense block of springs on the dofs of its second argument
      * to the system (in the blocks' frames, see solve()). The first
      * argument is a number that the caller gives the same block in every
-     * solve (a contact's index): under it the system keeps how the block
-     * is added to the compact system, and makes that anew only when the
-     * block's dofs differ from those it was made for. */
+     * solve (a contact's index): under it the system keeps the block and
+     * how it is added to the compact system (made anew only when the
+     * block's dofs differ from those it was made for). A null block adds
+     * the block last added under the number again, if it was on the same
+     * dofs; the return value says whether a block was added (false: no
+     * block on these dofs was kept, give it). */
     using BlockAdder =
-      std::function<void(const unsigned int,
+      std::function<bool(const unsigned int,
                          const ArrayView<const types::global_dof_index> &,
-                         const FullMatrix<double> &)>;
+                         const FullMatrix<double> *)>;
 
     /** Adds springs (the contacts') as dense blocks through a BlockAdder
      * and their forces to a right-hand side (global components). */
@@ -264,7 +267,8 @@ namespace ndda
     /// number for the block: the dofs it was made for; T, their expansion
     /// in the block's m compact unknowns, in sparse rows (the expansion
     /// entries of each dof with their positions among the m); and the
-    /// positions of the m x m entries in the compact matrix's values.
+    /// positions of the m x m entries in the compact matrix's values;
+    /// and T^T k T of the block last added through it.
     struct CompactPlan
     {
       std::vector<types::global_dof_index> dofs;
@@ -272,7 +276,17 @@ namespace ndda
       std::vector<unsigned int>            row_start, position;
       std::vector<double>                  weight;
       std::vector<std::size_t>             entries;
+      std::vector<double>                  block;
+      bool                                 has_block = false;
     };
+    /// The spring block last added under each of the callers' numbers,
+    /// with its dofs (see BlockAdder).
+    struct KeptBlock
+    {
+      std::vector<types::global_dof_index> dofs;
+      FullMatrix<double>                   k;
+    };
+    std::vector<KeptBlock> kept_blocks;
     /// The plans by the callers' numbers; cleared with the compact pattern.
     std::vector<CompactPlan> compact_plans;
     /// Buffers of add_to_compact().
@@ -282,7 +296,7 @@ namespace ndda
       /// Per compact unknown, its position in columns while a plan is
       /// made, else invalid.
       std::vector<unsigned int> slot;
-      std::vector<double>       kt, tkt;
+      std::vector<double>       kt;
     } scratch;
 
     /** Make @p plan for a block on @p dofs. */
@@ -298,12 +312,14 @@ namespace ndda
      * Add the dense spring block @p k on the dofs @p dofs to the compact
      * matrix through the expansion: T^T k T, T the expansion of the dofs
      * (the lines of the reduced blocks applied to the block before it is
-     * added, not entry by entry), by the plan kept under @p key.
+     * added, not entry by entry), by the plan kept under @p key, which
+     * keeps T^T k T too. A null @p k adds the kept T^T k T again; false if
+     * the plan has none for these dofs (nothing is added then).
      */
-    void
+    bool
     add_to_compact(const unsigned int                              key,
                    const ArrayView<const types::global_dof_index> &dofs,
-                   const FullMatrix<double>                       &k);
+                   const FullMatrix<double>                       *k);
 
     /** Solve the changed condensed system for @p b into @p d: GMRES with
      * the last factorization, or a new factorization (of a system with
