@@ -270,7 +270,11 @@ namespace ndda
        * Add the springs of a contact in state @p contact.state (locked or
        * sliding) on option @p o, all stiffnesses times @p scale: their
        * forces at d = 0 to @p force and, unless @p stiffness is null, their
-       * stiffness to @p stiffness.
+       * stiffness to @p stiffness. The stiffness must be a function of
+       * @p o, @p contact, @p scale and @p settings alone: within a step the
+       * handler asks for it once per contact and state, and later
+       * open-close solves in the same state reuse it (asking for the
+       * forces only).
        *
        * @param o The option the contact acts on.
        * @param contact Its state, anchor, sliding direction and friction.
