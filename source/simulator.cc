@@ -556,9 +556,18 @@ namespace ndda
   double
   Simulator<dim>::energy_error() const
   {
+    return energy_error(kinetic_energy(), strain_energy());
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::energy_error(const double kinetic, const double strain) const
+  {
     const double spring_energy =
       parameters.contact.enabled ? contacts.get_statistics().spring_energy : 0.;
-    return kinetic_energy() + strain_energy() + spring_energy - load_work -
+    return kinetic + strain + spring_energy - load_work -
            initial_kinetic_energy;
   }
 

@@ -249,6 +249,12 @@ namespace ndda
     double
     energy_error() const;
 
+    /** energy_error() with the kinetic energy and the strain energy given
+     * (as kinetic_energy() and strain_energy() return them), for a caller
+     * that has them already. */
+    double
+    energy_error(const double kinetic, const double strain) const;
+
     /**
      * The earliest edge failure the fracture check has found so far: the
      * time (s), the edge's midpoint at the step's end, and the mode.
