@@ -111,6 +111,7 @@ namespace ndda
           c.start        = c;
           c.start_chosen = c.chosen;
           c.start_bonded = c.bonded;
+          c.visit();
           for (const Option &o : c.options)
             couplings.emplace_back(o.vertex, edges[o.edge].cell);
         }
@@ -134,6 +135,8 @@ namespace ndda
           static_cast<ContactState &>(c) = c.start;
           c.chosen                       = c.start_chosen;
           c.bonded                       = c.start_bonded;
+          c.visited                      = 0;
+          c.visit();
         }
     }
 
@@ -312,11 +315,16 @@ namespace ndda
     ContactHandler::update_states(const dealii::Vector<double> &d)
     {
       bool changed = false;
+      one_way      = true;
       for (ContactPair &c : contacts)
-        if (c.chosen == invalid)
-          changed = resolve_pair(c, d) || changed;
-        else if (!c.shadowed)
-          changed = update_state(c, d) || changed;
+        {
+          const bool change = c.chosen == invalid ?
+                                resolve_pair(c, d) :
+                                !c.shadowed && update_state(c, d);
+          if (change)
+            one_way = !c.visit() && one_way;
+          changed = change || changed;
+        }
       return changed;
     }
 

@@ -54,7 +54,20 @@ namespace ndda
                         Patterns::Integer(1, 100),
                         "Largest number of solves in one step's open-close "
                         "iteration; a step whose contact states still "
-                        "change is cut in half and retried.");
+                        "change is cut in half and retried, unless the "
+                        "changes are one-way (see 'One-way open-close "
+                        "iterations').");
+      prm.declare_entry(
+        "One-way open-close iterations",
+        "100",
+        Patterns::Integer(1, 10000),
+        "Largest number of solves in one step's open-close iteration when "
+        "every state change past 'Open-close iterations' is one-way: each "
+        "contact that changes goes to a state (open, locked, sliding in "
+        "either direction) it has not had in this step, so the iteration "
+        "cannot cycle and ends. In tall stacks such a change passes from "
+        "course to course, one course a solve, and cutting the step does "
+        "not shorten it. Below 'Open-close iterations' it changes nothing.");
       prm.declare_entry(
         "Reused factorization iterations",
         "10",
@@ -102,6 +115,7 @@ namespace ndda
                     "largest Young's modulus, e.g. 100."));
       shear_stiffness_ratio     = prm.get_double("Shear stiffness ratio");
       max_open_close_iterations = prm.get_integer("Open-close iterations");
+      max_one_way_iterations = prm.get_integer("One-way open-close iterations");
       reuse_iterations     = prm.get_integer("Reused factorization iterations");
       vertex_vertex_method = prm.get("Vertex-vertex method") == "revised" ?
                                VertexVertexMethod::revised :

@@ -2,6 +2,8 @@
 
 #include <ndda/contact/open_close_solver.h>
 
+#include <algorithm>
+
 namespace ndda
 {
   namespace contact
@@ -22,7 +24,9 @@ namespace ndda
         [contacts](const LinearSystem::BlockAdder &add, Vector<double> &b) {
           contacts->assemble(add, b);
         };
-      for (unsigned int iteration = 0; iteration < max_iterations; ++iteration)
+      const unsigned int one_way_limit =
+        contacts != nullptr ? settings.max_one_way_iterations : 1;
+      for (unsigned int iteration = 0;; ++iteration)
         {
           Vector<double> b(rhs);
           // Newmark averages the forces at the step's start and end. A
@@ -51,8 +55,13 @@ namespace ndda
           contacts->count_iteration();
           if (!contacts->update_states(d))
             return true;
+          // Past the limit, the iteration goes on only while its changes
+          // are one-way (it cannot cycle), up to its own limit.
+          if (iteration + 1 >= max_iterations &&
+              (!contacts->last_changes_one_way() ||
+               iteration + 1 >= std::max(max_iterations, one_way_limit)))
+            return false;
         }
-      return false;
     }
   } // namespace contact
 } // namespace ndda

@@ -281,6 +281,8 @@ namespace ndda
       contact::OpenCloseSolver::Settings settings;
       settings.max_iterations   = parameters.contact.max_open_close_iterations;
       settings.reuse_iterations = parameters.contact.reuse_iterations;
+      settings.max_one_way_iterations =
+        parameters.contact.max_one_way_iterations;
       settings.average_contact_forces =
         parameters.control.time_integrator->averages_contact_forces();
       return settings;

@@ -221,6 +221,20 @@ namespace ndda
       update_states(const dealii::Vector<double> &d);
 
       /**
+       * Whether the changes of the last update_states() were all one-way:
+       * every contact that changed went to a state (and sliding direction)
+       * it has not had before in this step, and no vertex-vertex pair
+       * changed its reference edge. An iteration whose changes are all
+       * one-way cannot cycle: each contact has finitely many states to go
+       * to, so it ends (OpenCloseSolver lets it go on past the limit).
+       */
+      bool
+      last_changes_one_way() const
+      {
+        return one_way;
+      }
+
+      /**
        * Largest penetration (m) at the end of the step with increment @p d,
        * over the closed contacts.
        */
@@ -286,6 +300,21 @@ namespace ndda
         unsigned int start_chosen = invalid;
         /// Changes between open and closed in this step's iteration.
         unsigned int flips = 0;
+        /// The (state, sliding direction) pairs the contact has had in
+        /// this step's iteration, one bit each (visit()).
+        std::uint16_t visited = 0;
+
+        /// Mark the present (state, sliding direction) as visited in this
+        /// step; returns whether it had been visited before.
+        bool
+        visit()
+        {
+          const std::uint16_t bit =
+            1u << (3 * static_cast<unsigned int>(state) + (sign + 1));
+          const bool before = (visited & bit) != 0;
+          visited |= bit;
+          return before;
+        }
         /// Newmark: the fraction of the step's end force (closing) or start
         /// force (opening) the integrator uses, see update_scale().
         double scale = 1;
@@ -700,6 +729,8 @@ namespace ndda
       ContactStatistics                statistics;
       /// No step accepted yet: contacts that touch now are bonded.
       bool first_step = true;
+      /// See last_changes_one_way().
+      bool one_way = true;
       /// Forces of all springs at the end of the last accepted step.
       dealii::Vector<double> end_force;
     };

@@ -53,6 +53,7 @@ namespace ndda
       double             penalty_factor;
       double             shear_stiffness_ratio;
       unsigned int       max_open_close_iterations;
+      unsigned int       max_one_way_iterations;
       unsigned int       reuse_iterations;
       VertexVertexMethod vertex_vertex_method;
       double             max_penetration_ratio;

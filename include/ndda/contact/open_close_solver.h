@@ -26,6 +26,10 @@ namespace ndda
       {
         /// Iterations before the attempt is given up (the step is cut).
         unsigned int max_iterations = 1;
+        /// Iterations before the attempt is given up if every change of
+        /// the iterations past max_iterations was one-way
+        /// (ContactHandler::last_changes_one_way()).
+        unsigned int max_one_way_iterations = 1;
         /// GMRES iterations with the last factorization before a changed
         /// system is factorized (LinearSystem::solve()).
         unsigned int reuse_iterations = 0;
