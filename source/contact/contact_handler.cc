@@ -419,11 +419,14 @@ namespace ndda
           if (c.state == State::vertex_spring)
             end_vertex_spring(c, d);
           else if (c.state == State::open && c.vertex_a == invalid)
-            open_last_step.insert(
-              key(c.options[c.chosen].vertex, c.options[c.chosen].edge));
+            open_last_step.add(key(c.options[c.chosen].vertex,
+                                   c.options[c.chosen].edge),
+                               true);
           else if (c.state != State::open && c.chosen != invalid)
             end_closed_contact(c, d);
         }
+      memory.finish();
+      open_last_step.finish();
       applied.add(settings.average_start_and_end ? 0.5 : 1., end_force);
       statistics.contact_work += applied * d;
       statistics.dissipation =
@@ -438,7 +441,8 @@ namespace ndda
     {
       const double kn = settings.normal_stiffness;
       ++statistics.n_vertex_springs;
-      memory[{c.vertex_a, c.vertex_b, invalid}] = {c.state, 0., 0, 0., false};
+      memory.add({c.vertex_a, c.vertex_b, invalid},
+                 {c.state, 0., 0, 0., false});
       Tensor<1, 2> u;
       for (unsigned int k = 0; k < 2; ++k)
         u[k] = d[dofs->vertex_dofs[c.vertex_a][k]] -
@@ -515,8 +519,8 @@ namespace ndda
           ++statistics.n_bonded;
           statistics.bonded_length += c.bond_length;
         }
-      memory[key(o.vertex, o.edge)] = {
-        c.state, anchor, c.sign, c.offset, c.bonded};
+      memory.add(key(o.vertex, o.edge),
+                 {c.state, anchor, c.sign, c.offset, c.bonded});
     }
   } // namespace contact
 } // namespace ndda

@@ -224,7 +224,7 @@ namespace ndda
                                const unsigned int           vertex,
                                const unsigned int           edge) const
     {
-      return memory.count(key(vertex, edge)) > 0 ||
+      return memory.contains(key(vertex, edge)) ||
              straight_neighbour_in_memory(vertices, vertex, edge) != invalid;
     }
 
@@ -452,7 +452,7 @@ namespace ndda
       // A new pair whose vertex starts deep inside the other's corner
       // (behind both of its edges) is not a contact: the two vertices lie
       // on opposite sides of a thin body.
-      bool known = memory.count({a, b, invalid}) > 0;
+      bool known = memory.contains({a, b, invalid});
       for (const Option &o : c.options)
         known = known || remembered(vertices, o.vertex, o.edge);
       double depth = 0;

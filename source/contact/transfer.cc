@@ -34,7 +34,7 @@ namespace ndda
       unsigned int found = invalid;
       for (const unsigned int w : {edges[edge].v0, edges[edge].v1})
         for (const unsigned int other : edges_at_vertex[w])
-          if (other != edge && memory.count(key(vertex, other)) > 0)
+          if (other != edge && memory.contains(key(vertex, other)))
             {
               const Tensor<1, 2> u =
                 vertices[edges[other].v1] - vertices[edges[other].v0];
@@ -61,16 +61,15 @@ namespace ndda
         {
           // A vertex-edge contact: its own memory, or that of the same
           // vertex on a neighbouring edge it has slid over from.
-          const Option &o  = c.options[0];
-          c.chosen         = 0;
-          const auto found = memory.find(key(o.vertex, o.edge));
-          if (found != memory.end())
-            restore(found->second);
+          const Option &o = c.options[0];
+          c.chosen        = 0;
+          if (const Memory *found = memory.find(key(o.vertex, o.edge)))
+            restore(*found);
           else if (const unsigned int other =
                      straight_neighbour_in_memory(vertices, o.vertex, o.edge);
                    other != invalid)
             {
-              const Memory &near = memory.at(key(o.vertex, other));
+              const Memory &near = *memory.find(key(o.vertex, other));
               c.state            = near.state;
               c.sign             = near.sign;
               c.offset           = near.offset;
@@ -85,16 +84,15 @@ namespace ndda
         }
       for (unsigned int i = 0; i < c.options.size(); ++i)
         {
-          const auto found =
-            memory.find(key(c.options[i].vertex, c.options[i].edge));
-          if (found != memory.end())
+          if (const Memory *found =
+                memory.find(key(c.options[i].vertex, c.options[i].edge)))
             {
               c.chosen = i;
-              restore(found->second);
+              restore(*found);
               return;
             }
         }
-      if (memory.count({c.vertex_a, c.vertex_b, invalid}) > 0)
+      if (memory.contains({c.vertex_a, c.vertex_b, invalid}))
         c.state = State::vertex_spring;
     }
 
@@ -139,8 +137,8 @@ namespace ndda
       if (c.state == State::open && c.chosen != invalid &&
           c.options[c.chosen].gap <= settings.state_tolerance &&
           (c.vertex_a != invalid ||
-           open_last_step.count(
-             key(c.options[c.chosen].vertex, c.options[c.chosen].edge)) == 0))
+           !open_last_step.contains(
+             key(c.options[c.chosen].vertex, c.options[c.chosen].edge))))
         {
           c.state  = State::locked;
           c.anchor = c.options[c.chosen].ratio;

@@ -22,12 +22,12 @@ namespace ndda
   class BlockFrames;
 }
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <tuple>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -351,18 +351,67 @@ namespace ndda
       /** A vertex and the two vertices of an edge, or two vertices. */
       using Key = std::tuple<unsigned int, unsigned int, unsigned int>;
 
-      /** A hash of a Key for the step-to-step memory. */
-      struct KeyHash
+      /**
+       * What one step leaves for the next, looked up by Key: a vector
+       * filled during end_step() and sorted once by finish(), then
+       * searched by bisection. Unlike a hash map it allocates nothing per
+       * entry, and its storage is kept from step to step. An entry added
+       * twice holds its later value, as an assignment to a map would.
+       */
+      template <typename Value>
+      class StepMap
       {
-        std::size_t
-        operator()(const Key &k) const
+      public:
+        void
+        clear()
         {
-          const std::uint64_t h =
-            (std::uint64_t(std::get<0>(k)) * 0x9E3779B97F4A7C15ull) ^
-            (std::uint64_t(std::get<1>(k)) * 0xC2B2AE3D27D4EB4Full) ^
-            (std::uint64_t(std::get<2>(k)) * 0x165667B19E3779F9ull);
-          return static_cast<std::size_t>(h ^ (h >> 29));
+          entries.clear();
         }
+
+        void
+        add(const Key &k, const Value &value)
+        {
+          entries.emplace_back(k, value);
+        }
+
+        /** Sort the entries added; keep the last of equal keys. */
+        void
+        finish()
+        {
+          std::stable_sort(entries.begin(),
+                           entries.end(),
+                           [](const auto &a, const auto &b) {
+                             return a.first < b.first;
+                           });
+          auto last = entries.begin();
+          for (auto e = entries.begin(); e != entries.end(); ++e)
+            if (std::next(e) == entries.end() ||
+                std::next(e)->first != e->first)
+              *last++ = *e;
+          entries.erase(last, entries.end());
+        }
+
+        /** The value under @p k, or null. */
+        const Value *
+        find(const Key &k) const
+        {
+          const auto e = std::lower_bound(entries.begin(),
+                                          entries.end(),
+                                          k,
+                                          [](const auto &a, const Key &b) {
+                                            return a.first < b;
+                                          });
+          return e != entries.end() && e->first == k ? &e->second : nullptr;
+        }
+
+        bool
+        contains(const Key &k) const
+        {
+          return find(k) != nullptr;
+        }
+
+      private:
+        std::vector<std::pair<Key, Value>> entries;
       };
 
       /** Key of a (vertex, edge) pair that survives renumbered edges. */
@@ -722,11 +771,11 @@ namespace ndda
       mutable std::vector<Assembled>                     assembled;
       std::vector<std::pair<unsigned int, unsigned int>> couplings;
       /// What each contact of the last step left (looked up by key only).
-      std::unordered_map<Key, Memory, KeyHash> memory;
+      StepMap<Memory> memory;
       /// Vertex-edge contacts that ended the last step open: one that
       /// touches at the start of the next step starts it open too.
-      std::unordered_set<Key, KeyHash> open_last_step;
-      ContactStatistics                statistics;
+      StepMap<bool>     open_last_step;
+      ContactStatistics statistics;
       /// No step accepted yet: contacts that touch now are bonded.
       bool first_step = true;
       /// See last_changes_one_way().
