@@ -509,9 +509,7 @@ namespace ndda
             // costs more than the add), else added row by row.
             if (compact)
               {
-                if (!add_to_compact(key,
-                                    dofs,
-                                    block == nullptr && !keep ? nullptr : k))
+                if (!add_to_compact(key, dofs, k))
                   return false;
               }
             else if (std::any_of(dofs.begin(), dofs.end(), [&](const auto i) {
