@@ -26,9 +26,18 @@
 // time per step then covers less simulated time), and the set-up time in
 // seconds (meshing, element matrices, sparsity).
 //
+// The detection distance (sixth argument): `scene` (the default) keeps
+// `Control/Maximum displacement ratio` = 0.01, so that Shi's detection
+// distance, twice the largest step displacement, is 2 x 0.01 x half the
+// wall's height: 0.06 m for 12 courses, 0.125 m for 25 and 0.5 m for 100,
+// and a brick of the tall walls has more candidate contacts (bricks two
+// courses away). `brick` scales the ratio with 12 / courses, so that every
+// wall has the 12-course wall's 0.06 m: the same work per brick.
+//
 // Usage: block_models [steps] [largest wall: 1, 2 or 3] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
-//        (default 50, 2, KLU, meshed,affine,rigid, ramped)
+//                     [scene | brick]
+//        (default 50, 2, KLU, meshed,affine,rigid, ramped, scene)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -67,7 +76,8 @@ namespace
        const unsigned int length,
        const std::string &model,
        const std::string &solver,
-       const double       ramp)
+       const double       ramp,
+       const double       displacement_ratio)
   {
     const double       w = length, h = 0.5 * courses;
     std::ostringstream joints;
@@ -96,7 +106,8 @@ subsection Control
   set Time integrator = DDA
   set Time step       = 2e-3
   set End time        = 10
-  set Maximum displacement ratio = 0.01
+  set Maximum displacement ratio = )"
+         << displacement_ratio << R"(
   set Linear solver = )"
          << solver << R"(
   set Kinematics = )"
@@ -162,12 +173,16 @@ end
       const std::string &model,
       const std::string &solver,
       const unsigned int steps,
-      const bool         ramped)
+      const bool         ramped,
+      const bool         brick_detection)
   {
-    const double                 ramp = ramped ? ramp_time(courses) : 0.;
+    const double ramp = ramped ? ramp_time(courses) : 0.;
+    // Shi's detection distance is 2 x the ratio x half the scene's height:
+    // 0.06 m for 12 courses, 0.5 m for 100. `brick` keeps it at 0.06 m.
+    const double ratio = brick_detection ? 0.01 * 12. / courses : 0.01;
     dealii::ParameterHandler     prm;
     ndda::parameters::Parameters parameters;
-    parameters.read(wall(courses, length, model, solver, ramp),
+    parameters.read(wall(courses, length, model, solver, ramp, ratio),
                     "wall.prm",
                     prm);
     ndda::Simulator<2> simulator(parameters);
@@ -227,11 +242,19 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int steps   = argc > 1 ? std::atoi(argv[1]) : 50;
-  const unsigned int largest = argc > 2 ? std::atoi(argv[2]) : 2;
-  const std::string  solver  = argc > 3 ? argv[3] : "KLU";
-  const std::string  models  = argc > 4 ? argv[4] : "meshed,affine,rigid";
-  const std::string  start   = argc > 5 ? argv[5] : "ramped";
+  const unsigned int steps     = argc > 1 ? std::atoi(argv[1]) : 50;
+  const unsigned int largest   = argc > 2 ? std::atoi(argv[2]) : 2;
+  const std::string  solver    = argc > 3 ? argv[3] : "KLU";
+  const std::string  models    = argc > 4 ? argv[4] : "meshed,affine,rigid";
+  const std::string  start     = argc > 5 ? argv[5] : "ramped";
+  const std::string  detection = argc > 6 ? argv[6] : "scene";
+  if (detection != "scene" && detection != "brick")
+    {
+      std::cerr << "block_models: the sixth argument must be 'scene' or "
+                   "'brick', not '"
+                << detection << "'" << std::endl;
+      return 1;
+    }
   if (start != "ramped" && start != "sudden")
     {
       std::cerr << "block_models: the fifth argument must be 'ramped' or "
@@ -245,11 +268,11 @@ main(int argc, char **argv)
               << " steps of each run after gravity was ramped over 8 "
                  "periods of the wall's fundamental mode and held half as "
                  "long, "
-              << solver << std::endl;
+              << solver << ", detection distance: " << detection << std::endl;
   else
     std::cout << "steps 11 to " << steps + 10
               << " of each run, gravity switched on at t = 0, " << solver
-              << std::endl;
+              << ", detection distance: " << detection << std::endl;
   std::cout << std::setw(8) << "model" << std::setw(8) << "bricks"
             << std::setw(9) << "DoFs" << std::setw(11) << "ms/step"
             << std::setw(11) << "median" << std::setw(12) << "us/brick"
@@ -260,5 +283,11 @@ main(int argc, char **argv)
   for (unsigned int s = 0; s < largest && s < 3; ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
       if (("," + models + ",").find("," + model + ",") != std::string::npos)
-        run(sizes[s][0], sizes[s][1], model, solver, steps, ramped);
+        run(sizes[s][0],
+            sizes[s][1],
+            model,
+            solver,
+            steps,
+            ramped,
+            detection == "brick");
 }
