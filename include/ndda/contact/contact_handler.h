@@ -223,10 +223,12 @@ namespace ndda
       /**
        * Whether the changes of the last update_states() were all one-way:
        * every contact that changed went to a state (and sliding direction)
-       * it has not had before in this step, and no vertex-vertex pair
-       * changed its reference edge. An iteration whose changes are all
-       * one-way cannot cycle: each contact has finitely many states to go
-       * to, so it ends (OpenCloseSolver lets it go on past the limit).
+       * it has not had before in this step (a vertex-vertex pair's state
+       * counts whichever edge it is on, so a pair that changes its edge
+       * in the same state is not one-way). Each one-way change sets one of
+       * a contact's few state bits, so iterations whose changes are all
+       * one-way cannot cycle and end (OpenCloseSolver lets them go on past
+       * the limit).
        */
       bool
       last_changes_one_way() const
