@@ -33,10 +33,12 @@
 // and a brick of the tall walls has more candidate contacts (bricks two
 // courses away). `brick` scales the ratio with 12 / courses, so that every
 // wall has the 12-course wall's 0.06 m: the same work per brick.
+// `motion` keeps the ratio and sets `Contact/Detection distance = motion`,
+// a distance that follows the wall's motion (doc/contact.md).
 //
 // Usage: block_models [steps] [largest wall: 1, 2 or 3] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
-//                     [scene | brick]
+//                     [scene | brick | motion]
 //        (default 50, 2, KLU, meshed,affine,rigid, ramped, scene)
 
 #include <deal.II/base/mpi.h>
@@ -77,7 +79,8 @@ namespace
        const std::string &model,
        const std::string &solver,
        const double       ramp,
-       const double       displacement_ratio)
+       const double       displacement_ratio,
+       const std::string &detection)
   {
     const double       w = length, h = 0.5 * courses;
     std::ostringstream joints;
@@ -115,6 +118,8 @@ subsection Control
 end
 subsection Contact
   set Penalty factor = 10
+  set Detection distance = )"
+         << detection << R"(
 end
 subsection Materials
   set Names = rock
@@ -174,15 +179,21 @@ end
       const std::string &solver,
       const unsigned int steps,
       const bool         ramped,
-      const bool         brick_detection)
+      const std::string &detection)
   {
     const double ramp = ramped ? ramp_time(courses) : 0.;
     // Shi's detection distance is 2 x the ratio x half the scene's height:
     // 0.06 m for 12 courses, 0.5 m for 100. `brick` keeps it at 0.06 m.
-    const double ratio = brick_detection ? 0.01 * 12. / courses : 0.01;
+    const double ratio = detection == "brick" ? 0.01 * 12. / courses : 0.01;
     dealii::ParameterHandler     prm;
     ndda::parameters::Parameters parameters;
-    parameters.read(wall(courses, length, model, solver, ramp, ratio),
+    parameters.read(wall(courses,
+                         length,
+                         model,
+                         solver,
+                         ramp,
+                         ratio,
+                         detection == "motion" ? "motion" : "scene"),
                     "wall.prm",
                     prm);
     ndda::Simulator<2> simulator(parameters);
@@ -248,10 +259,10 @@ main(int argc, char **argv)
   const std::string  models    = argc > 4 ? argv[4] : "meshed,affine,rigid";
   const std::string  start     = argc > 5 ? argv[5] : "ramped";
   const std::string  detection = argc > 6 ? argv[6] : "scene";
-  if (detection != "scene" && detection != "brick")
+  if (detection != "scene" && detection != "brick" && detection != "motion")
     {
-      std::cerr << "block_models: the sixth argument must be 'scene' or "
-                   "'brick', not '"
+      std::cerr << "block_models: the sixth argument must be 'scene', "
+                   "'brick' or 'motion', not '"
                 << detection << "'" << std::endl;
       return 1;
     }
@@ -283,11 +294,5 @@ main(int argc, char **argv)
   for (unsigned int s = 0; s < largest && s < 3; ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
       if (("," + models + ",").find("," + model + ",") != std::string::npos)
-        run(sizes[s][0],
-            sizes[s][1],
-            model,
-            solver,
-            steps,
-            ramped,
-            detection == "brick");
+        run(sizes[s][0], sizes[s][1], model, solver, steps, ramped, detection);
 }

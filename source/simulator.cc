@@ -59,6 +59,9 @@ namespace ndda
     fem.setup_constraints(parameters);
     fem.setup_system(parameters);
     setup_contacts();
+    if (parameters.contact.enabled)
+      detection.initialize(parameters.contact.detection_rule,
+                           contact_distances.detection);
     fracture_check.setup(mesh,
                          fem.cell_material,
                          scene::material_strengths(parameters.materials),
@@ -226,6 +229,10 @@ namespace ndda
     if (max_increment >
         parameters.control.max_displacement_ratio * scene_half_height)
       return time::AttemptResult::too_large;
+    // Contacts detected within a distance that follows the motion: an
+    // attempt that moved further may have missed one. Detect again.
+    if (parameters.contact.enabled && !detection.covers(max_increment))
+      return time::AttemptResult::detect_again;
     // A cell that the increment turns inside out: no strain measure of the
     // linear update holds there (its strain energy changes sign). Only a
     // diverging motion or a step far too large does this; cut the step.
@@ -438,29 +445,47 @@ namespace ndda
   double
   Simulator<dim>::solve_step(Vector<double> &d)
   {
-    // Contacts are detected once per step, on the geometry of its start;
-    // the detection distance covers every step size the cuts may try.
+    // Contacts are detected once per step, on the geometry of its start,
+    // within a distance that covers the step's motion (DetectionDistance):
+    // Shi's distance covers every step size the cuts may try; one that
+    // follows the motion is widened, and the step detected again, when an
+    // attempt moves further.
+    double dt = step_controller.attempt_size(time);
     if (parameters.contact.enabled)
-      {
-        {
-          SectionTimer::Scope scope(timer, "contact detection");
-          contacts.begin_step(mesh.get_block_mesh().vertices,
-                              contact_distances.detection);
-        }
-        if (fem.linear_system.update_contact_couplings(contacts.get_couplings(),
-                                                       fem.dof_map,
-                                                       fem.constraints))
-          fem.assemble(displacement);
-      }
-    double              dt = step_controller.attempt_size(time);
+      detect_contacts(detection.for_step(dt));
     time::AttemptResult result;
     while ((result = try_time_step(dt, d)) != time::AttemptResult::accepted)
       {
+        if (result == time::AttemptResult::detect_again)
+          {
+            detect_contacts(detection.widen(max_increment));
+            continue;
+          }
         if (parameters.contact.enabled)
           contacts.restart_step();
         dt = step_controller.after_failure(result, dt, max_increment);
       }
+    if (parameters.contact.enabled)
+      detection.accept(dt, max_increment, contacts.max_depth(d));
     return dt;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::detect_contacts(const double distance)
+  {
+    {
+      SectionTimer::Scope scope(timer, "contact detection");
+      contacts.begin_step(mesh.get_block_mesh().vertices,
+                          distance,
+                          detection.skin());
+    }
+    if (fem.linear_system.update_contact_couplings(contacts.get_couplings(),
+                                                   fem.dof_map,
+                                                   fem.constraints))
+      fem.assemble(displacement);
   }
 
 

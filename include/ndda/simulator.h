@@ -23,6 +23,7 @@
 #include <ndda/base/log_file.h>
 #include <ndda/base/section_timer.h>
 #include <ndda/contact/contact_handler.h>
+#include <ndda/contact/detection_distance.h>
 #include <ndda/contact/open_close_solver.h>
 #include <ndda/fracture/edge_failure_check.h>
 #include <ndda/kinematics/automatic_kinematics.h>
@@ -232,6 +233,13 @@ namespace ndda
       return contacts;
     }
 
+    /** The detection distance of the steps (Contact/Detection distance). */
+    const contact::DetectionDistance &
+    get_detection_distance() const
+    {
+      return detection;
+    }
+
     /** Work done by the external loads since the start (J). */
     double
     work_of_loads() const
@@ -378,6 +386,10 @@ namespace ndda
      */
     double
     solve_step(Vector<double> &d);
+    /** Detect the contacts of the present step within @p distance and
+     * set the system's couplings up for them. */
+    void
+    detect_contacts(const double distance);
     /** One attempt of size @p dt: the open-close iteration, then the
      * checks of the increment @p d (check_increment()). */
     time::AttemptResult
@@ -454,6 +466,8 @@ namespace ndda
     contact::OpenCloseSolver open_close;
     contact::ContactHandler  contacts;
     scene::ContactDistances  contact_distances;
+    /// The detection distance of each step (Contact/Detection distance).
+    contact::DetectionDistance detection;
 
     Vector<double> displacement;
     /// Velocity and inertia force M a, carried by the time integrator.

@@ -196,9 +196,11 @@ namespace ndda
     bool
     NeighbourList::covers(const std::vector<Point<2>>     &vertices,
                           const std::vector<BoundaryEdge> &edges,
-                          const double                     threshold) const
+                          const double                     threshold,
+                          const double                     wanted) const
     {
-      if (reach < 0 || edges.size() != n_edges || vertices.size() != n_vertices)
+      if (reach < 0 || edges.size() != n_edges ||
+          vertices.size() != n_vertices || reach > 4. * wanted)
         return false;
       // The largest motion m of an end point since the build, against
       // threshold + 2 m <= reach.
@@ -218,9 +220,9 @@ namespace ndda
     void
     NeighbourList::build(const std::vector<Point<2>>     &vertices,
                          const std::vector<BoundaryEdge> &edges,
-                         const double                     threshold)
+                         const double                     reach_in)
     {
-      reach = threshold * (1. + skin_factor);
+      reach = reach_in;
       tests.clear();
       for_each_edge_pair(vertices,
                          edges,
@@ -257,13 +259,16 @@ namespace ndda
     std::vector<Candidate>
     NeighbourList::detect(const std::vector<Point<2>>     &vertices,
                           const std::vector<BoundaryEdge> &edges,
-                          const double                     threshold)
+                          const double                     threshold,
+                          const double                     min_skin)
     {
       AssertThrow(threshold >= 0.,
                   dealii::ExcMessage("The contact detection threshold must "
                                      "not be negative."));
-      if (!covers(vertices, edges, threshold))
-        build(vertices, edges, threshold);
+      const double wanted =
+        threshold + std::max(skin_factor * threshold, min_skin);
+      if (!covers(vertices, edges, threshold, wanted))
+        build(vertices, edges, wanted);
       std::vector<Candidate> candidates;
       Candidate              candidate;
       for (const auto &[v, e] : tests)

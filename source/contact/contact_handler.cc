@@ -80,7 +80,8 @@ namespace ndda
 
     void
     ContactHandler::begin_step(const std::vector<Point<2>> &vertices,
-                               const double                 threshold)
+                               const double                 threshold,
+                               const double                 min_skin)
     {
       statistics.n_iterations = 0;
       contacts.clear();
@@ -90,7 +91,7 @@ namespace ndda
         measure_block_edges(vertices); // on the first step's geometry
 
       const std::vector<Candidate> candidates =
-        neighbours.detect(vertices, edges, threshold);
+        neighbours.detect(vertices, edges, threshold, min_skin);
       statistics.n_candidates = candidates.size();
 
       // The narrow phase, one contact type after the other.
@@ -385,6 +386,18 @@ namespace ndda
             (c.state == State::locked || c.state == State::sliding))
           p = std::max(p, -c.options[c.chosen].normal_gap(d) - c.offset);
       return p;
+    }
+
+
+
+    double
+    ContactHandler::max_depth(const dealii::Vector<double> &d) const
+    {
+      double depth = 0;
+      for (const ContactPair &c : contacts)
+        if (c.chosen != invalid)
+          depth = std::max(depth, -c.options[c.chosen].normal_gap(d));
+      return depth;
     }
 
 

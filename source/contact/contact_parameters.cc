@@ -86,6 +86,23 @@ namespace ndda
                         "indeterminacy (thesis 6.2, 6.3); shortest path: "
                         "the original DDA rule, the potential reference "
                         "edge with the smaller penetration.");
+      prm.declare_entry(
+        "Detection distance",
+        "scene",
+        Patterns::Selection("motion|scene"),
+        "How far from an edge a vertex is a candidate contact of a step "
+        "(doc/contact.md, 'Detection'). scene: Shi's distance, "
+        "twice the largest increment the step control allows (2 x "
+        "Control/Maximum displacement ratio x half the scene's height), in "
+        "every step; it grows with the scene, and in a large scene each "
+        "block has candidates (couplings in the system) blocks away. "
+        "motion: four times the last step's largest increment plus twice "
+        "the deepest contact, between 1 % of Shi's distance and Shi's; a "
+        "step that moves further than its distance covers is detected "
+        "again and solved again at the same size. Both find every contact "
+        "a step can close; with motion the choice among the edges at a "
+        "corner may differ (doc/contact.md), which is why scene is the "
+        "default.");
       prm.declare_entry("Maximum penetration ratio",
                         "1e-3",
                         Patterns::Double(0.),
@@ -121,6 +138,9 @@ namespace ndda
                                VertexVertexMethod::revised :
                                VertexVertexMethod::shortest_path;
       max_penetration_ratio = prm.get_double("Maximum penetration ratio");
+      detection_rule        = prm.get("Detection distance") == "motion" ?
+                                contact::DetectionDistance::Rule::motion :
+                                contact::DetectionDistance::Rule::scene;
       AssertThrow(max_penetration_ratio > 0. ||
                     penalty_method == PenaltyMethod::fixed,
                   ExcMessage("Contact/Maximum penetration ratio: must be "

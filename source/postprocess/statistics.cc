@@ -96,6 +96,9 @@ namespace ndda
         statistics.add_value("Open-close cuts",
                              simulator.get_step_report().open_close_cuts);
         statistics.add_value("Contact candidates", c.n_contacts);
+        add_scientific(statistics,
+                       "Detection distance (m)",
+                       simulator.get_detection_distance().get());
         statistics.add_value("Closed contacts", c.n_closed);
         statistics.add_value("Sliding contacts", c.n_sliding);
         statistics.add_value("Vertex springs", c.n_vertex_springs);
@@ -157,7 +160,8 @@ namespace ndda
       ContactColumns,
       "contact",
       "With contact, statistics columns 'Open-close iterations', "
-      "'Open-close cuts', 'Contact candidates', 'Closed contacts', "
+      "'Open-close cuts', 'Contact candidates', 'Detection distance (m)', "
+      "'Closed contacts', "
       "'Sliding contacts', 'Vertex springs', 'Bonded contacts', 'Max "
       "penetration (m)', 'Contact energy (J)', 'Contact dissipation (J)' "
       "and 'Normal stiffness (N/m)'.")

@@ -72,6 +72,7 @@ namespace ndda
                                   const double        dt,
                                   const double        max_increment)
     {
+      Assert(result != AttemptResult::detect_again, ExcInternalError());
       if (result == AttemptResult::penalty_raised)
         {
           ++raises;

@@ -136,6 +136,12 @@ namespace ndda
      * the build, which the build's reach (its threshold plus the skin)
      * covers while t + 2 m stays below it.
      *
+     * A list built for a far larger distance than a later call asks for
+     * (its reach more than four times what a build for the call would
+     * have) is built again, so that a detection distance that falls (a
+     * scene that comes to rest) does not keep testing the pairs of the
+     * larger one.
+     *
      * The list belongs to one set of boundary edges and one numbering of
      * the vertices: clear() it when they change (a crack).
      */
@@ -152,11 +158,17 @@ namespace ndda
       void
       clear();
 
-      /** The candidates of detect(vertices, edges, threshold). */
+      /**
+       * The candidates of detect(vertices, edges, threshold). A build
+       * gives the list a skin of at least @p min_skin (m): a detection
+       * distance that follows the motion would otherwise give it a skin
+       * of a step's motion, and build it every other step.
+       */
       std::vector<Candidate>
       detect(const std::vector<Point<2>>     &vertices,
              const std::vector<BoundaryEdge> &edges,
-             const double                     threshold);
+             const double                     threshold,
+             const double                     min_skin = 0.);
 
       /** How often the list was built since construction. */
       unsigned int
@@ -173,16 +185,18 @@ namespace ndda
       }
 
     private:
-      /** True if the list covers distance @p threshold on @p vertices. */
+      /** True if the list covers distance @p threshold on @p vertices
+       * and is not far larger than a build with reach @p wanted. */
       bool
       covers(const std::vector<Point<2>>     &vertices,
              const std::vector<BoundaryEdge> &edges,
-             const double                     threshold) const;
+             const double                     threshold,
+             const double                     wanted) const;
 
       void
       build(const std::vector<Point<2>>     &vertices,
             const std::vector<BoundaryEdge> &edges,
-            const double                     threshold);
+            const double                     reach);
 
       double skin_factor;
       /// (vertex, edge), sorted and unique.

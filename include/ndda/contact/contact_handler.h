@@ -139,10 +139,16 @@ namespace ndda
 
       /**
        * Detect and set up the contacts of a step on the @p vertices at the
-       * step's start, with detection distance @p threshold.
+       * step's start, with detection distance @p threshold; the
+       * neighbour list of the broad phase gets a skin of at least
+       * @p min_skin (NeighbourList::detect()). Called again within a step
+       * (a detection distance widened, a crack, a promoted block), it sets
+       * the step up anew from the same memory.
        */
       void
-      begin_step(const std::vector<Point<2>> &vertices, const double threshold);
+      begin_step(const std::vector<Point<2>> &vertices,
+                 const double                 threshold,
+                 const double                 min_skin = 0.);
 
       /** Back to the states of the step's start (the step is retried). */
       void
@@ -242,6 +248,17 @@ namespace ndda
        */
       double
       max_penetration(const dealii::Vector<double> &d) const;
+
+      /**
+       * Largest depth (m) of a vertex behind its contact's edge at the end
+       * of the step with increment @p d, over every contact of the step
+       * and counting the offset that max_penetration() leaves out: how far
+       * inside a body a vertex of the next step's start may lie, which the
+       * next step's detection distance must reach (detect() measures the
+       * distance from the edge on either side).
+       */
+      double
+      max_depth(const dealii::Vector<double> &d) const;
 
       /** Accept the step's solution @p d: energies, anchors, transfer. */
       void

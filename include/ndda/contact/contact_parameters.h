@@ -4,6 +4,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ndda/contact/detection_distance.h>
+
 #include <memory>
 #include <string>
 
@@ -57,6 +59,8 @@ namespace ndda
       unsigned int       reuse_iterations;
       VertexVertexMethod vertex_vertex_method;
       double             max_penetration_ratio;
+      /// Contact/Detection distance.
+      contact::DetectionDistance::Rule detection_rule;
       /// The contact law's name, `set Contact law = ...`, and the law with
       /// its parameters read (contact/contact_law.h); stateless, shared.
       std::string                                law_name;

@@ -19,7 +19,10 @@ namespace ndda
       /// Automatic penalty: raised; solve the step again.
       penalty_raised,
       /// A cell would turn inside out.
-      inverted
+      inverted,
+      /// The attempt moved further than its contacts were detected for:
+      /// detect them again and solve the step again at the same size.
+      detect_again
     };
 
     /**
