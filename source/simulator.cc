@@ -466,7 +466,9 @@ namespace ndda
         dt = step_controller.after_failure(result, dt, max_increment);
       }
     if (parameters.contact.enabled)
-      detection.accept(dt, max_increment, contacts.max_depth(d));
+      detection.accept(dt,
+                       max_increment,
+                       detection.follows_motion() ? contacts.max_depth(d) : 0.);
     return dt;
   }
 

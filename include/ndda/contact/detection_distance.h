@@ -78,6 +78,14 @@ namespace ndda
         return rule == Rule::motion ? 0.25 * full : 0.;
       }
 
+      /** Whether the distance follows the motion (and accept() needs the
+       * depth of the contacts). */
+      bool
+      follows_motion() const
+      {
+        return rule == Rule::motion;
+      }
+
       /** The distance the present step was detected with. */
       double
       get() const
