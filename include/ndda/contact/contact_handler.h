@@ -139,11 +139,9 @@ namespace ndda
 
       /**
        * Detect and set up the contacts of a step on the @p vertices at the
-       * step's start, with detection distance @p threshold; the
-       * neighbour list of the broad phase gets a skin of at least
-       * @p min_skin (NeighbourList::detect()). Called again within a step
-       * (a detection distance widened, a crack, a promoted block), it sets
-       * the step up anew from the same memory.
+       * step's start within @p threshold, the neighbour list's skin at
+       * least @p min_skin. Called again within a step (a widened distance,
+       * a crack, a promoted block), it starts anew from the same memory.
        */
       void
       begin_step(const std::vector<Point<2>> &vertices,
@@ -242,21 +240,14 @@ namespace ndda
         return one_way;
       }
 
-      /**
-       * Largest penetration (m) at the end of the step with increment @p d,
-       * over the closed contacts.
-       */
+      /** Largest penetration (m) at the end of the step with increment
+       * @p d, over the closed contacts. */
       double
       max_penetration(const dealii::Vector<double> &d) const;
 
-      /**
-       * Largest depth (m) of a vertex behind its contact's edge at the end
-       * of the step with increment @p d, over every contact of the step
-       * and counting the offset that max_penetration() leaves out: how far
-       * inside a body a vertex of the next step's start may lie, which the
-       * next step's detection distance must reach (detect() measures the
-       * distance from the edge on either side).
-       */
+      /** Largest depth (m) of a vertex behind its contact's edge at the
+       * end of the step with increment @p d, offsets included: what the
+       * next step's detection distance must reach (DetectionDistance). */
       double
       max_depth(const dealii::Vector<double> &d) const;
 
