@@ -26,20 +26,21 @@
 // time per step then covers less simulated time), and the set-up time in
 // seconds (meshing, element matrices, sparsity).
 //
-// The detection distance (sixth argument): `scene` (the default) keeps
-// `Control/Maximum displacement ratio` = 0.01, so that Shi's detection
-// distance, twice the largest step displacement, is 2 x 0.01 x half the
-// wall's height: 0.06 m for 12 courses, 0.125 m for 25 and 0.5 m for 100,
-// and a brick of the tall walls has more candidate contacts (bricks two
-// courses away). `brick` scales the ratio with 12 / courses, so that every
-// wall has the 12-course wall's 0.06 m: the same work per brick.
-// `motion` keeps the ratio and sets `Contact/Detection distance = motion`,
-// a distance that follows the wall's motion (doc/contact.md).
+// The detection distance (sixth argument): `motion` (the default, as in
+// ndda) keeps `Control/Maximum displacement ratio` = 0.01 and sets
+// `Contact/Detection distance = motion`, a distance that follows the
+// wall's motion (doc/contact.md). `scene` sets `Detection distance =
+// scene`, Shi's distance, twice the largest step displacement: 2 x 0.01 x
+// half the wall's height, 0.06 m for 12 courses, 0.125 m for 25 and 0.5 m
+// for 100, and a brick of the tall walls has more candidate contacts
+// (bricks two courses away). `brick` is `scene` with the ratio scaled by
+// 12 / courses, so that every wall has the 12-course wall's 0.06 m: the
+// same work per brick.
 //
 // Usage: block_models [steps] [largest wall: 1, 2 or 3] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
 //                     [scene | brick | motion]
-//        (default 50, 2, KLU, meshed,affine,rigid, ramped, scene)
+//        (default 50, 2, KLU, meshed,affine,rigid, ramped, motion)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -258,7 +259,7 @@ main(int argc, char **argv)
   const std::string  solver    = argc > 3 ? argv[3] : "KLU";
   const std::string  models    = argc > 4 ? argv[4] : "meshed,affine,rigid";
   const std::string  start     = argc > 5 ? argv[5] : "ramped";
-  const std::string  detection = argc > 6 ? argv[6] : "scene";
+  const std::string  detection = argc > 6 ? argv[6] : "motion";
   if (detection != "scene" && detection != "brick" && detection != "motion")
     {
       std::cerr << "block_models: the sixth argument must be 'scene', "

@@ -230,9 +230,16 @@ namespace ndda
         parameters.control.max_displacement_ratio * scene_half_height)
       return time::AttemptResult::too_large;
     // Contacts detected within a distance that follows the motion: an
-    // attempt that moved further may have missed one. Detect again.
+    // attempt that moved further may have missed one. Detect again within
+    // the widened distance; only if it finds more candidates, solve again.
     if (parameters.contact.enabled && !detection.covers(max_increment))
-      return time::AttemptResult::detect_again;
+      {
+        SectionTimer::Scope scope(timer, "contact detection");
+        if (contacts.finds_more(mesh.get_block_mesh().vertices,
+                                detection.widen(max_increment),
+                                detection.skin()))
+          return time::AttemptResult::detect_again;
+      }
     // A cell that the increment turns inside out: no strain measure of the
     // linear update holds there (its strain energy changes sign). Only a
     // diverging motion or a step far too large does this; cut the step.
@@ -458,7 +465,7 @@ namespace ndda
       {
         if (result == time::AttemptResult::detect_again)
           {
-            detect_contacts(detection.widen(max_increment));
+            detect_contacts(detection.get());
             continue;
           }
         if (parameters.contact.enabled)

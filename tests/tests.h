@@ -22,6 +22,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -100,6 +101,18 @@ namespace ndda_tests
     check(std::abs(measured - expected) <=
             1e-12 * std::max(std::abs(expected), scale),
           what);
+  }
+
+  /** Replace the value of "set ENTRY = ..." (the first one) in @p text. */
+  inline std::string
+  set_entry(const std::string &text,
+            const std::string &entry,
+            const std::string &value)
+  {
+    const std::regex line("(set " + entry + " *= *)[^\n]*");
+    std::smatch      match;
+    check(std::regex_search(text, match, line), "no entry " + entry);
+    return match.prefix().str() + match[1].str() + value + match.suffix().str();
   }
 
 #ifdef NDDA_TEST_DIR

@@ -28,7 +28,6 @@
 // that side.
 
 #include <cmath>
-#include <regex>
 
 #include "tests.h"
 
@@ -36,18 +35,6 @@ using namespace ndda_tests;
 
 namespace
 {
-  /** Replace the value of "set ENTRY = ..." (the first one). */
-  std::string
-  set_entry(const std::string &text,
-            const std::string &entry,
-            const std::string &value)
-  {
-    const std::regex line("(set " + entry + " *= *)[^\n]*");
-    std::smatch      match;
-    check(std::regex_search(text, match, line), "no entry " + entry);
-    return match.prefix().str() + match[1].str() + value + match.suffix().str();
-  }
-
   struct Run
   {
     std::vector<std::vector<dealii::Point<2>>> points; // per step, per point

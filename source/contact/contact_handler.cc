@@ -124,6 +124,17 @@ namespace ndda
 
 
 
+    bool
+    ContactHandler::finds_more(const std::vector<Point<2>> &vertices,
+                               const double                 threshold,
+                               const double                 min_skin)
+    {
+      return neighbours.detect(vertices, edges, threshold, min_skin).size() >
+             statistics.n_candidates;
+    }
+
+
+
     void
     ContactHandler::restart_step()
     {
@@ -396,7 +407,8 @@ namespace ndda
       double depth = 0;
       for (const ContactPair &c : contacts)
         if (c.chosen != invalid)
-          depth = std::max(depth, -c.options[c.chosen].normal_gap(d));
+          depth =
+            std::max(depth, -c.options[c.chosen].normal_gap(d) - c.offset);
       return depth;
     }
 

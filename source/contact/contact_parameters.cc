@@ -88,21 +88,21 @@ namespace ndda
                         "edge with the smaller penetration.");
       prm.declare_entry(
         "Detection distance",
-        "scene",
+        "motion",
         Patterns::Selection("motion|scene"),
         "How far from an edge a vertex is a candidate contact of a step "
-        "(doc/contact.md, 'Detection'). scene: Shi's distance, "
-        "twice the largest increment the step control allows (2 x "
-        "Control/Maximum displacement ratio x half the scene's height), in "
-        "every step; it grows with the scene, and in a large scene each "
-        "block has candidates (couplings in the system) blocks away. "
-        "motion: four times the last step's largest increment plus twice "
-        "the deepest contact, between 1 % of Shi's distance and Shi's; a "
-        "step that moves further than its distance covers is detected "
-        "again and solved again at the same size. Both find every contact "
-        "a step can close; with motion the choice among the edges at a "
-        "corner may differ (doc/contact.md), which is why scene is the "
-        "default.");
+        "(doc/contact.md, 'Detection'). motion: four times the last step's "
+        "largest increment plus twice the deepest contact, between 1 % of "
+        "Shi's distance and Shi's; a step that moves further than its "
+        "distance covers is detected again, and solved again at the same "
+        "size if that finds more candidates. scene: Shi's distance, twice "
+        "the largest increment the step control allows (2 x Control/Maximum "
+        "displacement ratio x half the scene's height), in every step; it "
+        "grows with the scene, and in a large scene each block has "
+        "candidates (couplings in the system) blocks away. Both find every "
+        "contact a step can close, and the contacts a step makes of the "
+        "candidates do not depend on the distance; the results differ by "
+        "round-off.");
       prm.declare_entry("Maximum penetration ratio",
                         "1e-3",
                         Patterns::Double(0.),

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace ndda
 {
@@ -338,8 +339,41 @@ namespace ndda
 
 
 
+    bool
+    ContactHandler::nearer_elsewhere(const std::vector<Point<2>>  &vertices,
+                                     const std::vector<Candidate> &candidates,
+                                     const unsigned int            vertex,
+                                     const unsigned int            other) const
+    {
+      const double reach =
+        (1. - 1e-6) * vertices[vertex].distance(vertices[other]);
+      const unsigned int block = edges[edges_at_vertex[other][0]].block;
+      const auto         range = std::equal_range(
+        candidates.begin(),
+        candidates.end(),
+        vertex,
+        [](const auto &x, const auto &y) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Candidate>)
+            return x.vertex < y;
+          else
+            return x < y.vertex;
+        });
+      for (auto c = range.first; c != range.second; ++c)
+        {
+          const BoundaryEdge &e = edges[c->edge];
+          if (e.block == block && e.v0 != other && e.v1 != other &&
+              std::abs(c->distance) < reach && !in_cell(vertex, c->edge) &&
+              facing(vertices, vertex, c->edge))
+            return true;
+        }
+      return false;
+    }
+
+
+
     std::vector<std::pair<unsigned int, unsigned int>>
     ContactHandler::vertex_vertex_pairs(
+      const std::vector<Point<2>>   &vertices,
       const std::vector<Candidate>  &candidates,
       const std::vector<VertexEdge> &vertex_edge) const
     {
@@ -350,7 +384,10 @@ namespace ndda
             const unsigned int corner =
               c.edge_ratio < 0.5 ? edges[c.edge].v0 : edges[c.edge].v1;
             if (in_cell(c.vertex, c.edge) ||
-                has_vertex_edge_at(vertex_edge, c.vertex, corner))
+                has_vertex_edge_at(vertex_edge, c.vertex, corner) ||
+                has_vertex_edge_at(vertex_edge, corner, c.vertex) ||
+                nearer_elsewhere(vertices, candidates, c.vertex, corner) ||
+                nearer_elsewhere(vertices, candidates, corner, c.vertex))
               continue;
             pairs.push_back(std::minmax(c.vertex, corner));
           }
@@ -367,10 +404,9 @@ namespace ndda
       const std::vector<Candidate>  &candidates,
       const std::vector<VertexEdge> &vertex_edge)
     {
-      for (const auto &[a, b] : vertex_vertex_pairs(candidates, vertex_edge))
+      for (const auto &[a, b] :
+           vertex_vertex_pairs(vertices, candidates, vertex_edge))
         {
-          if (has_vertex_edge_at(vertex_edge, b, a))
-            continue;
           bool neighbours = false;
           for (const unsigned int e : edges_at_vertex[a])
             neighbours = neighbours || other_end(edges[e], a) == b;

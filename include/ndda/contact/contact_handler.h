@@ -14,6 +14,7 @@
 
 #include <ndda/contact/contact_detection.h>
 #include <ndda/contact/contact_law.h>
+#include <ndda/contact/contact_statistics.h>
 #include <ndda/mesh/boundary_edges.h>
 #include <ndda/physics/dof_map.h>
 
@@ -35,34 +36,6 @@ namespace ndda
 {
   namespace contact
   {
-    /** Figures of the last step, for the statistics file. */
-    struct ContactStatistics
-    {
-      unsigned int n_candidates     = 0;
-      unsigned int n_contacts       = 0;
-      unsigned int n_closed         = 0;
-      unsigned int n_sliding        = 0;
-      unsigned int n_vertex_springs = 0;
-      unsigned int n_vertex_vertex  = 0;
-      unsigned int n_iterations     = 0;
-      /// Bonded contacts (joint cohesion and tension intact) at the end of
-      /// the step, and the contact length they carry (m).
-      unsigned int n_bonded      = 0;
-      double       bonded_length = 0;
-      /// Largest penetration (m, positive) of a closed contact at the end
-      /// of the step.
-      double max_penetration = 0;
-      /// Energy stored in the springs at the end of the step (J).
-      double spring_energy = 0;
-      /// Work done on the bodies by the contact forces the integrator
-      /// applied, accumulated over the run (J).
-      double contact_work = 0;
-      /// Energy the contacts have taken out of the scene so far (J):
-      /// -contact_work - spring_energy, i.e. friction and the losses of
-      /// penalty springs that close within a step.
-      double dissipation = 0;
-    };
-
     /**
      * The contacts of a scene: from the candidates of contact detection to
      * springs in the system matrix, and the open-close iteration's states,
@@ -145,6 +118,15 @@ namespace ndda
        */
       void
       begin_step(const std::vector<Point<2>> &vertices,
+                 const double                 threshold,
+                 const double                 min_skin = 0.);
+
+      /**
+       * Would begin_step() within @p threshold find more candidates than
+       * the step's (a larger distance finds a superset)?
+       */
+      bool
+      finds_more(const std::vector<Point<2>> &vertices,
                  const double                 threshold,
                  const double                 min_skin = 0.);
 
@@ -556,12 +538,27 @@ namespace ndda
       /**
        * The vertex pairs (smaller index first, sorted) of the vertex_vertex
        * candidates: a vertex and the end point of the edge closest to it,
-       * unless the vertex belongs to the edge's cell or already touches an
-       * edge at that end point (the vertex-edge contact holds the pair).
+       * unless the vertex belongs to the edge's cell, either of the two
+       * touches an edge at the other (the vertex-edge contact holds the
+       * pair), or either is nearer to the other's block elsewhere. Each of
+       * these is decided by candidates nearer than the pair, so the pairs
+       * do not depend on the detection distance.
        */
       std::vector<std::pair<unsigned int, unsigned int>>
-      vertex_vertex_pairs(const std::vector<Candidate>  &candidates,
+      vertex_vertex_pairs(const std::vector<Point<2>>   &vertices,
+                          const std::vector<Candidate>  &candidates,
                           const std::vector<VertexEdge> &vertex_edge) const;
+
+      /**
+       * Has @p vertex a facing candidate, not in its own cell, on an edge of
+       * the block of @p other that does not end at @p other, nearer than
+       * @p other (found at any distance that finds the pair)?
+       */
+      bool
+      nearer_elsewhere(const std::vector<Point<2>>  &vertices,
+                       const std::vector<Candidate> &candidates,
+                       const unsigned int            vertex,
+                       const unsigned int            other) const;
 
       /**
        * Add the contacts of the vertex pairs of vertex_vertex_pairs():

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_contact_contact_statistics_h
+#define ndda_contact_contact_statistics_h
+
+namespace ndda
+{
+  namespace contact
+  {
+    /** Figures of the last step, for the statistics file. */
+    struct ContactStatistics
+    {
+      unsigned int n_candidates     = 0;
+      unsigned int n_contacts       = 0;
+      unsigned int n_closed         = 0;
+      unsigned int n_sliding        = 0;
+      unsigned int n_vertex_springs = 0;
+      unsigned int n_vertex_vertex  = 0;
+      unsigned int n_iterations     = 0;
+      /// Bonded contacts (joint cohesion and tension intact) at the end of
+      /// the step, and the contact length they carry (m).
+      unsigned int n_bonded      = 0;
+      double       bonded_length = 0;
+      /// Largest penetration (m, positive) of a closed contact at the end
+      /// of the step.
+      double max_penetration = 0;
+      /// Energy stored in the springs at the end of the step (J).
+      double spring_energy = 0;
+      /// Work done on the bodies by the contact forces the integrator
+      /// applied, accumulated over the run (J).
+      double contact_work = 0;
+      /// Energy the contacts have taken out of the scene so far (J):
+      /// -contact_work - spring_energy, i.e. friction and the losses of
+      /// penalty springs that close within a step.
+      double dissipation = 0;
+    };
+  } // namespace contact
+} // namespace ndda
+
+#endif
