@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace ndda
 {
@@ -348,17 +347,13 @@ namespace ndda
       const double reach =
         (1. - 1e-6) * vertices[vertex].distance(vertices[other]);
       const unsigned int block = edges[edges_at_vertex[other][0]].block;
-      const auto         range = std::equal_range(
-        candidates.begin(),
-        candidates.end(),
-        vertex,
-        [](const auto &x, const auto &y) {
-          if constexpr (std::is_same_v<std::decay_t<decltype(x)>, Candidate>)
-            return x.vertex < y;
-          else
-            return x < y.vertex;
-        });
-      for (auto c = range.first; c != range.second; ++c)
+      // The candidates are sorted by vertex.
+      const auto first = std::partition_point(candidates.begin(),
+                                              candidates.end(),
+                                              [vertex](const Candidate &c) {
+                                                return c.vertex < vertex;
+                                              });
+      for (auto c = first; c != candidates.end() && c->vertex == vertex; ++c)
         {
           const BoundaryEdge &e = edges[c->edge];
           if (e.block == block && e.v0 != other && e.v1 != other &&
