@@ -15,6 +15,8 @@
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <suitesparse/klu.h>
 #include <suitesparse/umfpack.h>
 
@@ -304,6 +306,57 @@ namespace ndda
       klu_l_symbolic *symbolic = nullptr;
       klu_l_numeric  *numeric  = nullptr;
     };
+
+
+    /**
+     * GMRES's control with an earlier factorization: it fails at
+     * @p max_steps iterations, and after @p sure_steps iterations also as
+     * soon as the reduction of the residual so far, extrapolated at its
+     * mean rate, would not reach the tolerance within @p max_steps: such
+     * a solve costs more than the factorization it was to save.
+     */
+    class ReuseControl : public SolverControl
+    {
+    public:
+      ReuseControl()
+        : SolverControl(1, 0., false, false)
+      {}
+
+      /** Set up for the next solve (the control is kept from solve to
+       * solve, with the GMRES solvers that refer to it). */
+      void
+      reset(const unsigned int max_steps,
+            const unsigned int sure_steps,
+            const double       tolerance,
+            const double       initial)
+      {
+        set_max_steps(max_steps);
+        set_tolerance(tolerance * initial);
+        this->sure_steps = sure_steps;
+        this->initial    = initial;
+        log_target       = std::log(tolerance);
+      }
+
+      State
+      check(const unsigned int step, const double value) override
+      {
+        const State state = SolverControl::check(step, value);
+        if (state != iterate || step < sure_steps)
+          return state;
+        const double log_reduction = std::log(value / initial);
+        if (!(log_reduction < 0.) ||
+            step * log_target / log_reduction > max_steps())
+          {
+            lcheck = failure;
+            return failure;
+          }
+        return state;
+      }
+
+    private:
+      unsigned int sure_steps = 0;
+      double       initial = 1, log_target = 0;
+    };
   } // namespace
 
 
@@ -319,6 +372,11 @@ namespace ndda
     /// a pointer to them).
     std::vector<double>    null_space;
     Teuchos::ParameterList ml_parameters;
+    /// GMRES with an earlier factorization: its control and the solvers
+    /// by basis size, kept from solve to solve (making a deal.II solver
+    /// costs as much as a small scene's solve).
+    ReuseControl reuse_control;
+    std::map<unsigned int, std::unique_ptr<SolverGMRES<Vector<double>>>> gmres;
   };
 
 
@@ -429,52 +487,6 @@ namespace ndda
 
 
 
-  namespace
-  {
-    /**
-     * GMRES's control with an earlier factorization: it fails at
-     * @p max_steps iterations, and after @p sure_steps iterations also as
-     * soon as the reduction of the residual so far, extrapolated at its
-     * mean rate, would not reach the tolerance within @p max_steps: such
-     * a solve costs more than the factorization it was to save.
-     */
-    class ReuseControl : public SolverControl
-    {
-    public:
-      ReuseControl(const unsigned int max_steps,
-                   const unsigned int sure_steps,
-                   const double       tolerance,
-                   const double       initial)
-        : SolverControl(max_steps, tolerance * initial, false, false)
-        , sure_steps(sure_steps)
-        , initial(initial)
-        , log_target(std::log(tolerance))
-      {}
-
-      State
-      check(const unsigned int step, const double value) override
-      {
-        const State state = SolverControl::check(step, value);
-        if (state != iterate || step < sure_steps)
-          return state;
-        const double log_reduction = std::log(value / initial);
-        if (!(log_reduction < 0.) ||
-            step * log_target / log_reduction > max_steps())
-          {
-            lcheck = failure;
-            return failure;
-          }
-        return state;
-      }
-
-    private:
-      const unsigned int sure_steps;
-      const double       initial, log_target;
-    };
-  } // namespace
-
-
-
   unsigned int
   LinearSolver::reuse_limit(const unsigned int min_iterations) const
   {
@@ -494,9 +506,9 @@ namespace ndda
     const unsigned int          min_iterations,
     const double                tolerance)
   {
-    const auto &impl    = *implementation;
-    const bool  umfpack = type == parameters::LinearSolverType::umfpack;
-    const auto  n       = static_cast<SuiteSparse_long>(matrix.m());
+    auto      &impl    = *implementation;
+    const bool umfpack = type == parameters::LinearSolverType::umfpack;
+    const auto n       = static_cast<SuiteSparse_long>(matrix.m());
     if (min_iterations == 0 ||
         !(umfpack ?
             impl.umfpack.size() == n :
@@ -508,10 +520,14 @@ namespace ndda
       return 1;
     const unsigned int max_iterations = reuse_limit(min_iterations);
     // Right preconditioning: GMRES then watches the true residual.
-    ReuseControl control(max_iterations, min_iterations, tolerance, norm);
-    SolverGMRES<Vector<double>> gmres(
-      control,
-      SolverGMRES<Vector<double>>::AdditionalData(max_iterations + 2, true));
+    auto &control = impl.reuse_control;
+    control.reset(max_iterations, min_iterations, tolerance, norm);
+    auto &solver = impl.gmres[max_iterations + 2];
+    if (!solver)
+      solver = std::make_unique<SolverGMRES<Vector<double>>>(
+        control,
+        SolverGMRES<Vector<double>>::AdditionalData(max_iterations + 2, true));
+    auto &gmres = *solver;
     try
       {
         if (umfpack)
