@@ -339,7 +339,7 @@ end
       // corner can stay locked there (doc/validation.md names the cause).
       std::ostringstream sides;
       sides << std::setprecision(3);
-      bool               left_corner = true;
+      bool left_corner = true;
       for (const double offset : {0., 1e-3, -1e-3})
         {
           const auto s = [](const double v) {
