@@ -17,8 +17,7 @@
 // beyond 1 % of m g h at any time (asserted) and the five rebound heights
 // (printed against the 5 % target, which is not met: doc/contact.md).
 // The falling block as an affine and as a rigid block (issue 15): the same
-// targets, asserted except the rebound (printed against the 5 % target,
-// missed by the reduced blocks), and the five bounces printed.
+// targets, all asserted, and the five bounces printed.
 
 #include <cmath>
 
@@ -265,12 +264,8 @@ main(int argc, char **argv)
       record(key + "newmark.rebound_met",
              met(std::abs(n.rebound / h - 1) < 0.05));
       check(n.max_gain <= 0.01 * mgh, model + ", Newmark: energy gain");
-      // Not asserted: the reduced blocks lose energy at the impact's
-      // contact switches (doc/validation.md; the integrator's issue 16).
-      if (std::abs(n.rebound / h - 1) >= 0.05)
-        std::cout << "  target NOT met for the " << model << " block: rebound "
-                  << 100 * n.rebound / h
-                  << " % of the drop height (target within 5 %)" << std::endl;
+      check(std::abs(n.rebound / h - 1) < 0.05,
+            model + ", Newmark: rebound not within 5 % of the drop height");
       const Result d = run("DDA", 0.01, 5e-3, 0.7, 0.5, model);
       check_common(model + ", DDA, penalty 0.01 E", d, key + "dda.");
       record(key + "dda.restitution", std::sqrt(d.rebound / h), 2);

@@ -25,6 +25,9 @@ namespace ndda
       /** Cosine of the largest angle between two edges taken as parallel. */
       constexpr double parallel_cosine = 0.99985; // 1 degree
 
+      /** Cosine of the largest kink at a straight vertex. */
+      constexpr double straight_cosine = 0.985; // 10 degrees
+
       double
       cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
       {
@@ -39,6 +42,77 @@ namespace ndda
       {
         const Tensor<1, 2> t = vertices[edges[e].v1] - vertices[edges[e].v0];
         return Tensor<1, 2>({t[1], -t[0]}) / t.norm();
+      }
+
+      /** Is @p vertex a straight vertex (two edges, kink below 10°)? */
+      bool
+      straight_vertex(const std::vector<Point<2>>                  &vertices,
+                      const std::vector<BoundaryEdge>              &edges,
+                      const std::vector<std::vector<unsigned int>> &at_vertex,
+                      const unsigned int                            vertex)
+      {
+        const auto &at = at_vertex[vertex];
+        return at.size() == 2 && outward(vertices, edges, at[0]) *
+                                     outward(vertices, edges, at[1]) >=
+                                   straight_cosine;
+      }
+
+      /**
+       * Is @p vertex a convex corner: two edges, the body on the left,
+       * turning left by more than a straight vertex's kink and by less
+       * than 180 degrees less that kink (a turn of 180 degrees, the tip of
+       * a crack or of a spike, has no side)?
+       */
+      bool
+      convex_corner(const std::vector<Point<2>>                  &vertices,
+                    const std::vector<BoundaryEdge>              &edges,
+                    const std::vector<std::vector<unsigned int>> &at_vertex,
+                    const unsigned int                            vertex)
+      {
+        const auto &at = at_vertex[vertex];
+        if (at.size() != 2)
+          return false;
+        const unsigned int  k   = edges[at[0]].v1 == vertex ? 0 : 1;
+        const BoundaryEdge &in  = edges[at[k]];
+        const BoundaryEdge &out = edges[at[1 - k]];
+        const Tensor<1, 2>  a   = vertices[in.v1] - vertices[in.v0];
+        const Tensor<1, 2>  b   = vertices[out.v1] - vertices[out.v0];
+        return cross(a, b) > std::sqrt(1. - straight_cosine * straight_cosine) *
+                               a.norm() * b.norm();
+      }
+
+      /**
+       * Is @p vertex a straight vertex of a face that lies at a convex
+       * corner (an end of @p e) where the corner touches the face (a
+       * vertex-edge pair of @p vertex_edge on an edge at @p vertex more
+       * than 10 degrees from lying on @p e: faces lying on each other
+       * touch at all their vertices)? The corner touches the face then;
+       * the face's vertex lies behind the corner's edges only within the
+       * corner's penetration. A spring of it on a corner's edge acts on
+       * the edge's line beyond the corner: a wall across the face that
+       * stops a face sliding over the corner at each of its vertices.
+       */
+      bool
+      face_vertex_at_corner(
+        const std::vector<Point<2>>                              &vertices,
+        const std::vector<BoundaryEdge>                          &edges,
+        const std::vector<std::vector<unsigned int>>             &at_vertex,
+        const std::vector<std::pair<unsigned int, unsigned int>> &vertex_edge,
+        const unsigned int                                        vertex,
+        const unsigned int                                        e)
+      {
+        if (!straight_vertex(vertices, edges, at_vertex, vertex))
+          return false;
+        const Tensor<1, 2> n = outward(vertices, edges, e);
+        for (const unsigned int corner : {edges[e].v0, edges[e].v1})
+          if (convex_corner(vertices, edges, at_vertex, corner))
+            for (const unsigned int f : at_vertex[vertex])
+              if (std::binary_search(vertex_edge.begin(),
+                                     vertex_edge.end(),
+                                     std::make_pair(corner, f)) &&
+                  n * outward(vertices, edges, f) > -straight_cosine)
+                return true;
+        return false;
       }
 
       /** The end of boundary edge @p e that is not @p v. */
@@ -246,7 +320,16 @@ namespace ndda
           touched_edges(vertices, first, last, vertex_edge);
           first = last;
         }
-      return vertex_edge;
+      // A vertex of a straight face at the other block's convex corner,
+      // where the corner touches that face: the corner touches the face,
+      // not the face's vertex the corner's edges.
+      std::vector<VertexEdge> kept;
+      kept.reserve(vertex_edge.size());
+      for (const VertexEdge &p : vertex_edge)
+        if (!face_vertex_at_corner(
+              vertices, edges, edges_at_vertex, vertex_edge, p.first, p.second))
+          kept.push_back(p);
+      return kept;
     }
 
 
@@ -378,9 +461,13 @@ namespace ndda
           {
             const unsigned int corner =
               c.edge_ratio < 0.5 ? edges[c.edge].v0 : edges[c.edge].v1;
+            // Faces lying on each other keep the pair even where one vertex
+            // already touches the other's face: the other vertex gets its
+            // contact from the pair (add_edge_edge_contacts()).
             if (in_cell(c.vertex, c.edge) ||
-                has_vertex_edge_at(vertex_edge, c.vertex, corner) ||
-                has_vertex_edge_at(vertex_edge, corner, c.vertex) ||
+                ((has_vertex_edge_at(vertex_edge, c.vertex, corner) ||
+                  has_vertex_edge_at(vertex_edge, corner, c.vertex)) &&
+                 !faces_meet(vertices, c.vertex, corner)) ||
                 nearer_elsewhere(vertices, candidates, c.vertex, corner) ||
                 nearer_elsewhere(vertices, candidates, corner, c.vertex))
               continue;
@@ -408,25 +495,47 @@ namespace ndda
           if (neighbours)
             continue;
 
-          // Edge-edge: an edge e at b and an edge f at a that leave the
-          // pair in the same direction and overlap.
-          unsigned int face_e = invalid, face_f = invalid;
-          for (const unsigned int e : edges_at_vertex[b])
-            for (const unsigned int f : edges_at_vertex[a])
-              {
-                Tensor<1, 2> we =
-                  vertices[other_end(edges[e], b)] - vertices[b];
-                Tensor<1, 2> wf =
-                  vertices[other_end(edges[f], a)] - vertices[a];
-                if (we * wf > parallel_cosine * we.norm() * wf.norm() &&
-                    facing(vertices, a, e) && facing(vertices, b, f))
-                  face_e = e, face_f = f;
-              }
-          if (face_e != invalid)
-            add_edge_edge_contacts(vertices, vertex_edge, a, b, face_e, face_f);
+          if (faces_meet(vertices, a, b))
+            add_edge_edge_contacts(vertices, vertex_edge, a, b);
           else
             add_vertex_vertex_contact(vertices, a, b);
         }
+    }
+
+
+
+    bool
+    ContactHandler::parallel_faces(const std::vector<Point<2>> &vertices,
+                                   const unsigned int           a,
+                                   const unsigned int           b,
+                                   const unsigned int           e) const
+    {
+      const Tensor<1, 2> we = vertices[other_end(edges[e], b)] - vertices[b];
+      for (const unsigned int f : edges_at_vertex[a])
+        {
+          const Tensor<1, 2> wf =
+            vertices[other_end(edges[f], a)] - vertices[a];
+          const double d = we * wf;
+          if (d > 0 &&
+              d * d > parallel_cosine * parallel_cosine * we.norm_square() *
+                        wf.norm_square() &&
+              facing(vertices, a, e) && facing(vertices, b, f))
+            return true;
+        }
+      return false;
+    }
+
+
+
+    bool
+    ContactHandler::faces_meet(const std::vector<Point<2>> &vertices,
+                               const unsigned int           a,
+                               const unsigned int           b) const
+    {
+      for (const unsigned int e : edges_at_vertex[b])
+        if (parallel_faces(vertices, a, b, e))
+          return true;
+      return false;
     }
 
 
@@ -436,25 +545,39 @@ namespace ndda
       const std::vector<Point<2>>   &vertices,
       const std::vector<VertexEdge> &vertex_edge,
       const unsigned int             a,
-      const unsigned int             b,
-      const unsigned int             face_e,
-      const unsigned int             face_f)
+      const unsigned int             b)
     {
-      for (const auto &[v, e] :
-           {std::make_pair(a, face_e), std::make_pair(b, face_f)})
+      for (const auto &[v, w] : {std::make_pair(a, b), std::make_pair(b, a)})
         {
-          // Already a vertex-edge contact (the pair was found from the
-          // other vertex's side): not twice.
-          if (std::binary_search(vertex_edge.begin(),
-                                 vertex_edge.end(),
-                                 std::make_pair(v, e)))
+          // One contact for each vertex: none if it already touches an
+          // edge at w (the pair was found from the other vertex's side, or
+          // this vertex projects just inside one of w's edges).
+          if (has_vertex_edge_at(vertex_edge, v, w))
             continue;
+          // Of the faces at w that lie on a face at v, the one v projects
+          // farthest into (at a straight vertex w, v lies just inside one
+          // of its two edges and just beyond the other).
+          unsigned int best   = invalid;
+          double       inside = 0, ratio = 0;
+          for (const unsigned int e : edges_at_vertex[w])
+            if (parallel_faces(vertices, v, w, e))
+              {
+                const Tensor<1, 2> t =
+                  vertices[edges[e].v1] - vertices[edges[e].v0];
+                const double r =
+                  ((vertices[v] - vertices[edges[e].v0]) * t) / t.norm_square();
+                if (best == invalid || std::min(r, 1. - r) > inside)
+                  best = e, inside = std::min(r, 1. - r), ratio = r;
+              }
+          if (best == invalid || ratio < -1e-3 || ratio > 1. + 1e-3)
+            continue; // v is beyond the faces: no overlap
           ContactPair face;
-          face.options.push_back(make_option(vertices, v, e));
-          const Option &o = face.options[0];
-          if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
-            continue; // v is beyond the edge: no overlap
-          if (o.gap < -settings.ignore_depth && !remembered(vertices, v, e))
+          face.options.push_back(make_option(vertices, v, best));
+          if (face.options[0].ratio < -1e-6 ||
+              face.options[0].ratio > 1. + 1e-6)
+            continue;
+          if (face.options[0].gap < -settings.ignore_depth &&
+              !remembered(vertices, v, best))
             continue; // the other side of a thin body
           face.friction = std::min(vertex_friction[a], vertex_friction[b]);
           contacts.push_back(std::move(face));

@@ -500,7 +500,9 @@ namespace ndda
       /**
        * The vertex-edge contacts of a step, sorted by vertex, then edge:
        * the vertex_edge candidates of each vertex that can touch their
-       * edge, one of two at a convex corner (see touched_edges()).
+       * edge, one of two at a convex corner (see touched_edges()), except
+       * a face's straight vertex on the edges of a convex corner that
+       * touches the face (doc/contact.md, item 2).
        */
       std::vector<VertexEdge>
       vertex_edge_pairs(const std::vector<Point<2>>  &vertices,
@@ -540,7 +542,8 @@ namespace ndda
        * candidates: a vertex and the end point of the edge closest to it,
        * unless the vertex belongs to the edge's cell, either of the two
        * touches an edge at the other (the vertex-edge contact holds the
-       * pair), or either is nearer to the other's block elsewhere. Each of
+       * pair; not where faces at the two lie on each other, faces_meet()),
+       * or either is nearer to the other's block elsewhere. Each of
        * these is decided by candidates nearer than the pair, so the pairs
        * do not depend on the detection distance.
        */
@@ -571,21 +574,38 @@ namespace ndda
                                  const std::vector<VertexEdge> &vertex_edge);
 
       /**
-       * Edge-edge: an edge @p face_e at @p b and an edge @p face_f at @p a
-       * that leave the pair in the same direction and overlap. Nothing is
-       * indeterminate then: a touches face_e and b touches face_f, each at
-       * the end point of the edge, two vertex-edge contacts. Both are kept,
-       * so that when the corners move apart the one whose vertex slides
-       * onto the other's edge goes on with its state, and no contact
-       * appears already compressed.
+       * Is edge @p e at vertex @p b a face that @p a faces and that lies on
+       * a face at @p a (an edge at @p a that leaves @p a in the same
+       * direction as @p e leaves @p b, and faces @p b)?
+       */
+      bool
+      parallel_faces(const std::vector<Point<2>> &vertices,
+                     const unsigned int           a,
+                     const unsigned int           b,
+                     const unsigned int           e) const;
+
+      /** Do faces at @p a and @p b lie on each other (parallel_faces())? */
+      bool
+      faces_meet(const std::vector<Point<2>> &vertices,
+                 const unsigned int           a,
+                 const unsigned int           b) const;
+
+      /**
+       * Edge-edge: faces at @p a and @p b lie on each other. Nothing is
+       * indeterminate then: each vertex touches the other's face there, two
+       * vertex-edge contacts (one per vertex: at a straight vertex, the
+       * face it projects into). Both are kept, also where one of them is
+       * already a vertex-edge contact, so that the pair has the same two
+       * springs whichever vertex rounding puts exactly at the other's end,
+       * and when the corners move apart the one whose vertex slides onto
+       * the other's edge goes on with its state, and no contact appears
+       * already compressed.
        */
       void
       add_edge_edge_contacts(const std::vector<Point<2>>   &vertices,
                              const std::vector<VertexEdge> &vertex_edge,
                              const unsigned int             a,
-                             const unsigned int             b,
-                             const unsigned int             face_e,
-                             const unsigned int             face_f);
+                             const unsigned int             b);
 
       /**
        * A vertex-vertex contact of @p a and @p b with the facing edges at
