@@ -95,6 +95,7 @@ namespace ndda
       statistics.n_candidates = candidates.size();
 
       // The narrow phase, one contact type after the other.
+      compute_normals(vertices);
       const std::vector<VertexEdge> vertex_edge =
         vertex_edge_pairs(vertices, candidates);
       add_vertex_edge_contacts(vertices, vertex_edge);

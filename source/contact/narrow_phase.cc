@@ -17,11 +17,6 @@ namespace ndda
   {
     namespace
     {
-      /** Vertices of the reference triangle (deal.II's numbering). */
-      const Point<2> unit_vertex[3] = {Point<2>(0, 0),
-                                       Point<2>(1, 0),
-                                       Point<2>(0, 1)};
-
       /** Cosine of the largest angle between two edges taken as parallel. */
       constexpr double parallel_cosine = 0.99985; // 1 degree
 
@@ -44,17 +39,18 @@ namespace ndda
         return Tensor<1, 2>({t[1], -t[0]}) / t.norm();
       }
 
-      /** Is @p vertex a straight vertex (two edges, kink below 10°)? */
+      /**
+       * Is @p vertex a straight vertex (two edges, kink below 10°), by the
+       * edges' outward unit @p normal?
+       */
       bool
-      straight_vertex(const std::vector<Point<2>>                  &vertices,
-                      const std::vector<BoundaryEdge>              &edges,
+      straight_vertex(const std::vector<Tensor<1, 2>>              &normal,
                       const std::vector<std::vector<unsigned int>> &at_vertex,
                       const unsigned int                            vertex)
       {
         const auto &at = at_vertex[vertex];
-        return at.size() == 2 && outward(vertices, edges, at[0]) *
-                                     outward(vertices, edges, at[1]) >=
-                                   straight_cosine;
+        return at.size() == 2 &&
+               normal[at[0]] * normal[at[1]] >= straight_cosine;
       }
 
       /**
@@ -96,21 +92,21 @@ namespace ndda
       face_vertex_at_corner(
         const std::vector<Point<2>>                              &vertices,
         const std::vector<BoundaryEdge>                          &edges,
+        const std::vector<Tensor<1, 2>>                          &normal,
         const std::vector<std::vector<unsigned int>>             &at_vertex,
         const std::vector<std::pair<unsigned int, unsigned int>> &vertex_edge,
         const unsigned int                                        vertex,
         const unsigned int                                        e)
       {
-        if (!straight_vertex(vertices, edges, at_vertex, vertex))
+        if (!straight_vertex(normal, at_vertex, vertex))
           return false;
-        const Tensor<1, 2> n = outward(vertices, edges, e);
         for (const unsigned int corner : {edges[e].v0, edges[e].v1})
           if (convex_corner(vertices, edges, at_vertex, corner))
             for (const unsigned int f : at_vertex[vertex])
               if (std::binary_search(vertex_edge.begin(),
                                      vertex_edge.end(),
                                      std::make_pair(corner, f)) &&
-                  n * outward(vertices, edges, f) > -straight_cosine)
+                  normal[e] * normal[f] > -straight_cosine)
                 return true;
         return false;
       }
@@ -122,99 +118,6 @@ namespace ndda
         return e.v0 == v ? e.v1 : e.v0;
       }
     } // namespace
-
-
-
-    void
-    ContactHandler::EdgeShapes::initialize(
-      const dealii::FiniteElement<2> &fe_in)
-    {
-      fe               = &fe_in;
-      n_points         = fe->degree + 1;
-      sampled          = fe->degree >= 1 && n_points <= max_points;
-      const auto point = [](const unsigned int k, const double c) {
-        return Point<2>(unit_vertex[k] +
-                        c * (unit_vertex[(k + 1) % 3] - unit_vertex[k]));
-      };
-      for (unsigned int k = 0; k < 3 && sampled; ++k)
-        {
-          edge_dofs[k].clear();
-          samples[k].clear();
-          for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
-            {
-              std::vector<double> v(n_points);
-              double              largest = 0;
-              for (unsigned int j = 0; j < n_points; ++j)
-                {
-                  v[j] = fe->shape_value(i, point(k, double(j) / fe->degree));
-                  largest = std::max(largest, std::abs(v[j]));
-                }
-              if (largest <= 1e-13)
-                continue; // vanishes on the edge (checked below)
-              edge_dofs[k].push_back(i);
-              samples[k].insert(samples[k].end(), v.begin(), v.end());
-            }
-        }
-      // The interpolation must reproduce every function at points between
-      // the samples, the vanishing ones included; else evaluate directly.
-      std::vector<double> value(fe->n_dofs_per_cell());
-      for (unsigned int k = 0; k < 3 && sampled; ++k)
-        for (const double c : {0.2718281828, 0.6180339887})
-          {
-            std::fill(value.begin(), value.end(), 0.);
-            values(k, c, value.data());
-            std::vector<double> on_edge(fe->n_dofs_per_cell(), 0.);
-            for (unsigned int q = 0; q < edge_dofs[k].size(); ++q)
-              on_edge[edge_dofs[k][q]] = value[q];
-            for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
-              if (std::abs(on_edge[i] - fe->shape_value(i, point(k, c))) >
-                  1e-12)
-                sampled = false;
-          }
-      if (!sampled)
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            edge_dofs[k].resize(fe->n_dofs_per_cell());
-            for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
-              edge_dofs[k][i] = i;
-          }
-    }
-
-
-
-    void
-    ContactHandler::EdgeShapes::values(const unsigned int k,
-                                       const double       c,
-                                       double            *values) const
-    {
-      const unsigned int n = edge_dofs[k].size();
-      if (!sampled)
-        {
-          const Point<2> xi =
-            unit_vertex[k] + c * (unit_vertex[(k + 1) % 3] - unit_vertex[k]);
-          for (unsigned int q = 0; q < n; ++q)
-            values[q] = fe->shape_value(edge_dofs[k][q], xi);
-          return;
-        }
-      // Lagrange basis on the points j / p.
-      const unsigned int p = n_points - 1;
-      double             basis[max_points];
-      for (unsigned int j = 0; j <= p; ++j)
-        {
-          basis[j] = 1;
-          for (unsigned int m = 0; m <= p; ++m)
-            if (m != j)
-              basis[j] *= (c * p - m) / (double(j) - m);
-        }
-      const double *sample = samples[k].data();
-      for (unsigned int q = 0; q < n; ++q, sample += n_points)
-        {
-          double v = 0;
-          for (unsigned int j = 0; j <= p; ++j)
-            v += sample[j] * basis[j];
-          values[q] = v;
-        }
-    }
 
 
 
@@ -280,15 +183,30 @@ namespace ndda
 
 
 
-    bool
-    ContactHandler::facing(const std::vector<Point<2>> &vertices,
-                           const unsigned int           vertex,
-                           const unsigned int           edge) const
+    void
+    ContactHandler::compute_normals(const std::vector<Point<2>> &vertices)
     {
-      Tensor<1, 2> n;
-      for (const unsigned int f : edges_at_vertex[vertex])
-        n += outward(vertices, edges, f);
-      return n * outward(vertices, edges, edge) < -1e-3 * n.norm();
+      edge_normal.resize(edges.size());
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        edge_normal[e] = outward(vertices, edges, e);
+      vertex_normal.resize(edges_at_vertex.size());
+      for (unsigned int v = 0; v < edges_at_vertex.size(); ++v)
+        {
+          Tensor<1, 2> n;
+          for (const unsigned int f : edges_at_vertex[v])
+            n += edge_normal[f];
+          vertex_normal[v] = n;
+        }
+    }
+
+
+
+    bool
+    ContactHandler::facing(const unsigned int vertex,
+                           const unsigned int edge) const
+    {
+      const Tensor<1, 2> &n = vertex_normal[vertex];
+      return n * edge_normal[edge] < -1e-3 * n.norm();
     }
 
 
@@ -326,8 +244,13 @@ namespace ndda
       std::vector<VertexEdge> kept;
       kept.reserve(vertex_edge.size());
       for (const VertexEdge &p : vertex_edge)
-        if (!face_vertex_at_corner(
-              vertices, edges, edges_at_vertex, vertex_edge, p.first, p.second))
+        if (!face_vertex_at_corner(vertices,
+                                   edges,
+                                   edge_normal,
+                                   edges_at_vertex,
+                                   vertex_edge,
+                                   p.first,
+                                   p.second))
           kept.push_back(p);
       return kept;
     }
@@ -344,8 +267,7 @@ namespace ndda
       for (auto c = first; c != last; ++c)
         {
           if (c->type != CandidateType::vertex_edge ||
-              in_cell(c->vertex, c->edge) ||
-              !facing(vertices, c->vertex, c->edge))
+              in_cell(c->vertex, c->edge) || !facing(c->vertex, c->edge))
             continue;
           if (c->distance < -settings.ignore_depth &&
               !remembered(vertices, c->vertex, c->edge))
@@ -392,10 +314,9 @@ namespace ndda
     {
       for (const auto &[v, e] : vertex_edge)
         {
-          ContactPair c;
+          ContactPair &c = contacts.emplace_back();
           c.options.push_back(make_option(vertices, v, e));
           c.friction = std::min(edge_friction[e], vertex_friction[v]);
-          contacts.push_back(std::move(c));
         }
     }
 
@@ -441,7 +362,7 @@ namespace ndda
           const BoundaryEdge &e = edges[c->edge];
           if (e.block == block && e.v0 != other && e.v1 != other &&
               std::abs(c->distance) < reach && !in_cell(vertex, c->edge) &&
-              facing(vertices, vertex, c->edge))
+              facing(vertex, c->edge))
             return true;
         }
       return false;
@@ -449,32 +370,47 @@ namespace ndda
 
 
 
-    std::vector<std::pair<unsigned int, unsigned int>>
+    std::vector<ContactHandler::VertexPair>
     ContactHandler::vertex_vertex_pairs(
       const std::vector<Point<2>>   &vertices,
       const std::vector<Candidate>  &candidates,
       const std::vector<VertexEdge> &vertex_edge) const
     {
-      std::vector<std::pair<unsigned int, unsigned int>> pairs;
+      // The pairs of the candidates not in their edge's cell; every other
+      // test is the pair's, made once for each pair.
+      std::vector<std::pair<unsigned int, unsigned int>> found;
       for (const Candidate &c : candidates)
-        if (c.type == CandidateType::vertex_vertex)
-          {
-            const unsigned int corner =
-              c.edge_ratio < 0.5 ? edges[c.edge].v0 : edges[c.edge].v1;
-            // Faces lying on each other keep the pair even where one vertex
-            // already touches the other's face: the other vertex gets its
-            // contact from the pair (add_edge_edge_contacts()).
-            if (in_cell(c.vertex, c.edge) ||
-                ((has_vertex_edge_at(vertex_edge, c.vertex, corner) ||
-                  has_vertex_edge_at(vertex_edge, corner, c.vertex)) &&
-                 !faces_meet(vertices, c.vertex, corner)) ||
-                nearer_elsewhere(vertices, candidates, c.vertex, corner) ||
-                nearer_elsewhere(vertices, candidates, corner, c.vertex))
-              continue;
-            pairs.push_back(std::minmax(c.vertex, corner));
-          }
-      std::sort(pairs.begin(), pairs.end());
-      pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+        if (c.type == CandidateType::vertex_vertex &&
+            !in_cell(c.vertex, c.edge))
+          found.push_back(std::minmax(c.vertex,
+                                      c.edge_ratio < 0.5 ? edges[c.edge].v0 :
+                                                           edges[c.edge].v1));
+      std::sort(found.begin(), found.end());
+      found.erase(std::unique(found.begin(), found.end()), found.end());
+
+      std::vector<VertexPair> pairs;
+      for (const auto &[a, b] : found)
+        {
+          bool neighbours = false;
+          for (const unsigned int e : edges_at_vertex[a])
+            neighbours = neighbours || other_end(edges[e], a) == b;
+          if (neighbours)
+            continue;
+          // A vertex-edge contact at the other vertex holds the pair,
+          // unless faces lie on each other there and the other vertex has
+          // no contact yet: it gets its own from the pair
+          // (add_edge_edge_contacts()).
+          const bool a_at_b = has_vertex_edge_at(vertex_edge, a, b);
+          const bool b_at_a = has_vertex_edge_at(vertex_edge, b, a);
+          if (a_at_b && b_at_a)
+            continue;
+          const bool held = a_at_b || b_at_a;
+          if ((held && !faces_meet(vertices, a, b)) ||
+              nearer_elsewhere(vertices, candidates, a, b) ||
+              nearer_elsewhere(vertices, candidates, b, a))
+            continue;
+          pairs.push_back({a, b, held || faces_meet(vertices, a, b)});
+        }
       return pairs;
     }
 
@@ -486,20 +422,12 @@ namespace ndda
       const std::vector<Candidate>  &candidates,
       const std::vector<VertexEdge> &vertex_edge)
     {
-      for (const auto &[a, b] :
+      for (const VertexPair &p :
            vertex_vertex_pairs(vertices, candidates, vertex_edge))
-        {
-          bool neighbours = false;
-          for (const unsigned int e : edges_at_vertex[a])
-            neighbours = neighbours || other_end(edges[e], a) == b;
-          if (neighbours)
-            continue;
-
-          if (faces_meet(vertices, a, b))
-            add_edge_edge_contacts(vertices, vertex_edge, a, b);
-          else
-            add_vertex_vertex_contact(vertices, a, b);
-        }
+        if (p.faces_meet)
+          add_edge_edge_contacts(vertices, vertex_edge, p.a, p.b);
+        else
+          add_vertex_vertex_contact(vertices, p.a, p.b);
     }
 
 
@@ -519,7 +447,7 @@ namespace ndda
           if (d > 0 &&
               d * d > parallel_cosine * parallel_cosine * we.norm_square() *
                         wf.norm_square() &&
-              facing(vertices, a, e) && facing(vertices, b, f))
+              facing(a, e) && facing(b, f))
             return true;
         }
       return false;
@@ -571,16 +499,14 @@ namespace ndda
               }
           if (best == invalid || ratio < -1e-3 || ratio > 1. + 1e-3)
             continue; // v is beyond the faces: no overlap
-          ContactPair face;
-          face.options.push_back(make_option(vertices, v, best));
-          if (face.options[0].ratio < -1e-6 ||
-              face.options[0].ratio > 1. + 1e-6)
+          const Option o = make_option(vertices, v, best);
+          if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
             continue;
-          if (face.options[0].gap < -settings.ignore_depth &&
-              !remembered(vertices, v, best))
+          if (o.gap < -settings.ignore_depth && !remembered(vertices, v, best))
             continue; // the other side of a thin body
+          ContactPair &face = contacts.emplace_back();
+          face.options.push_back(o);
           face.friction = std::min(vertex_friction[a], vertex_friction[b]);
-          contacts.push_back(std::move(face));
         }
     }
 
@@ -596,10 +522,10 @@ namespace ndda
       c.vertex_a = a;
       c.vertex_b = b;
       for (const unsigned int e : edges_at_vertex[b])
-        if (facing(vertices, a, e))
+        if (facing(a, e))
           c.options.push_back(make_option(vertices, a, e));
       for (const unsigned int f : edges_at_vertex[a])
-        if (facing(vertices, b, f))
+        if (facing(b, f))
           c.options.push_back(make_option(vertices, b, f));
       if (c.options.empty())
         return;

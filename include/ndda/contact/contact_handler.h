@@ -15,6 +15,8 @@
 #include <ndda/contact/contact_detection.h>
 #include <ndda/contact/contact_law.h>
 #include <ndda/contact/contact_statistics.h>
+#include <ndda/contact/edge_shapes.h>
+#include <ndda/contact/step_map.h>
 #include <ndda/mesh/boundary_edges.h>
 #include <ndda/physics/dof_map.h>
 
@@ -341,70 +343,7 @@ namespace ndda
       static constexpr unsigned int invalid = static_cast<unsigned int>(-1);
 
       /** A vertex and the two vertices of an edge, or two vertices. */
-      using Key = std::tuple<unsigned int, unsigned int, unsigned int>;
-
-      /**
-       * What one step leaves for the next, looked up by Key: a vector
-       * filled during end_step() and sorted once by finish(), then
-       * searched by bisection. Unlike a hash map it allocates nothing per
-       * entry, and its storage is kept from step to step. An entry added
-       * twice holds its later value, as an assignment to a map would.
-       */
-      template <typename Value>
-      class StepMap
-      {
-      public:
-        void
-        clear()
-        {
-          entries.clear();
-        }
-
-        void
-        add(const Key &k, const Value &value)
-        {
-          entries.emplace_back(k, value);
-        }
-
-        /** Sort the entries added; keep the last of equal keys. */
-        void
-        finish()
-        {
-          std::stable_sort(entries.begin(),
-                           entries.end(),
-                           [](const auto &a, const auto &b) {
-                             return a.first < b.first;
-                           });
-          auto last = entries.begin();
-          for (auto e = entries.begin(); e != entries.end(); ++e)
-            if (std::next(e) == entries.end() ||
-                std::next(e)->first != e->first)
-              *last++ = *e;
-          entries.erase(last, entries.end());
-        }
-
-        /** The value under @p k, or null. */
-        const Value *
-        find(const Key &k) const
-        {
-          const auto e = std::lower_bound(entries.begin(),
-                                          entries.end(),
-                                          k,
-                                          [](const auto &a, const Key &b) {
-                                            return a.first < b;
-                                          });
-          return e != entries.end() && e->first == k ? &e->second : nullptr;
-        }
-
-        bool
-        contains(const Key &k) const
-        {
-          return find(k) != nullptr;
-        }
-
-      private:
-        std::vector<std::pair<Key, Value>> entries;
-      };
+      using Key = ContactKey;
 
       /** Key of a (vertex, edge) pair that survives renumbered edges. */
       Key
@@ -418,49 +357,6 @@ namespace ndda
        * candidates of detect() to the contacts of a step.
        */
       /** @{ */
-
-      /**
-       * The cells' shape functions along the three edges of the reference
-       * triangle: for the edge that starts at local vertex k, the local
-       * dofs whose functions do not vanish on it, and their values at
-       * degree + 1 equispaced points, which interpolate them exactly
-       * (doc/contact.md, "Kernels").
-       */
-      struct EdgeShapes
-      {
-        /**
-         * Sample the shape functions of @p fe; checks the interpolation
-         * at two more points and falls back to direct evaluation on all
-         * dofs where it does not hold.
-         */
-        void
-        initialize(const dealii::FiniteElement<2> &fe);
-
-        /** The local dofs of the edge from local vertex @p k. */
-        const std::vector<unsigned int> &
-        dofs(const unsigned int k) const
-        {
-          return edge_dofs[k];
-        }
-
-        /**
-         * The values at the point @p c in [0, 1] along the edge from
-         * local vertex @p k of the functions of dofs(k), to @p values.
-         */
-        void
-        values(const unsigned int k, const double c, double *values) const;
-
-      private:
-        /// Sampled up to degree 7; higher degrees are evaluated directly.
-        static constexpr unsigned int max_points = 8;
-
-        const dealii::FiniteElement<2>          *fe       = nullptr;
-        unsigned int                             n_points = 0;
-        bool                                     sampled  = false;
-        std::array<std::vector<unsigned int>, 3> edge_dofs;
-        /// Per edge, per dof of edge_dofs, n_points values.
-        std::array<std::vector<double>, 3> samples;
-      };
 
       /** The option of @p vertex against @p edge on the @p vertices. */
       Option
@@ -476,16 +372,23 @@ namespace ndda
       in_cell(const unsigned int vertex, const unsigned int edge) const;
 
       /**
+       * The outward unit normal of every boundary edge and their sum at
+       * every vertex, on the @p vertices of the step: made once at the
+       * start of the narrow phase, for facing() and the corner tests.
+       */
+      void
+      compute_normals(const std::vector<Point<2>> &vertices);
+
+      /**
        * Can @p vertex touch @p edge: do the outward normal at the vertex
        * (the mean of its edges' normals) and the edge's normal point
        * against each other? This rules out the other vertices of the same
        * straight side, every vertex of a convex block against its own
-       * edges, and the far face of a thin block.
+       * edges, and the far face of a thin block. On the normals of
+       * compute_normals().
        */
       bool
-      facing(const std::vector<Point<2>> &vertices,
-             const unsigned int           vertex,
-             const unsigned int           edge) const;
+      facing(const unsigned int vertex, const unsigned int edge) const;
 
       /**
        * Is there a state to carry over to @p vertex on @p edge (see
@@ -537,17 +440,27 @@ namespace ndda
                          const unsigned int             vertex,
                          const unsigned int             corner) const;
 
+      /** A pair of vertices that may touch, and whether faces at the two
+       * lie on each other (faces_meet()). */
+      struct VertexPair
+      {
+        unsigned int a, b;
+        bool         faces_meet;
+      };
+
       /**
        * The vertex pairs (smaller index first, sorted) of the vertex_vertex
        * candidates: a vertex and the end point of the edge closest to it,
-       * unless the vertex belongs to the edge's cell, either of the two
-       * touches an edge at the other (the vertex-edge contact holds the
-       * pair; not where faces at the two lie on each other, faces_meet()),
-       * or either is nearer to the other's block elsewhere. Each of
-       * these is decided by candidates nearer than the pair, so the pairs
-       * do not depend on the detection distance.
+       * unless the vertex belongs to the edge's cell (for every candidate
+       * of the pair), the two vertices are the ends of one boundary edge,
+       * either of the two touches an edge at the other (the vertex-edge
+       * contact holds the pair; not where faces at the two lie on each
+       * other, faces_meet(), and one of the two has no contact on the
+       * other's faces yet), or either is nearer to the other's block
+       * elsewhere. Each of these is decided by candidates nearer than the
+       * pair, so the pairs do not depend on the detection distance.
        */
-      std::vector<std::pair<unsigned int, unsigned int>>
+      std::vector<VertexPair>
       vertex_vertex_pairs(const std::vector<Point<2>>   &vertices,
                           const std::vector<Candidate>  &candidates,
                           const std::vector<VertexEdge> &vertex_edge) const;
@@ -780,6 +693,10 @@ namespace ndda
       std::vector<std::vector<unsigned int>> edges_at_vertex;
       /// The shape functions along the edges, for the options.
       EdgeShapes edge_shapes;
+      /// The outward unit normals of the boundary edges, and their sums
+      /// at the vertices, on the vertices of the step (compute_normals()).
+      std::vector<Tensor<1, 2>> edge_normal;
+      std::vector<Tensor<1, 2>> vertex_normal;
       /// Detection's broad phase, kept while the vertices move little.
       NeighbourList neighbours;
       /// Mean boundary edge length of every block (m).
