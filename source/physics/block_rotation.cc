@@ -10,29 +10,29 @@ namespace ndda
     /** What rotate_blocks() needs of a block. */
     struct Block
     {
-      /// Sum of area * rotation and of area over its cells.
-      double spin = 0, area = 0;
       /// Sums over the nodes that define the centre, and their weight.
-      Tensor<1, 2> position, velocity, acceleration;
+      Tensor<1, 2> position, velocity, acceleration, increment;
       double       weight = 0;
       /// Its number of constrained nodes.
       unsigned int constrained = 0;
 
       /**
-       * Add a node at @p x of mass @p m, velocity @p v and inertia force
-       * @p f to the sums of the centre: weighted by its mass (the centre
-       * of mass), or by one for a constrained block (the mean of the
-       * constrained nodes, whose accelerations are f / m).
+       * Add a node at @p x of mass @p m, velocity @p v, inertia force
+       * @p f and increment @p u to the sums of the centre: weighted by its
+       * mass (the centre of mass), or by one for a constrained block (the
+       * mean of the constrained nodes, whose accelerations are f / m).
        */
       void
       add_node(const Point<2>     &x,
                const double        m,
                const Tensor<1, 2> &v,
-               const Tensor<1, 2> &f)
+               const Tensor<1, 2> &f,
+               const Tensor<1, 2> &u)
       {
         const double w = constrained > 0 ? 1. : m;
         position += w * x;
         velocity += w * v;
+        increment += w * u;
         acceleration += constrained > 0 && m > 0. ? f / m : f;
         weight += w;
       }
@@ -61,6 +61,39 @@ namespace ndda
         }
       return position;
     }
+
+    /** The block of every node (invalid for a node of no cell), which
+     * nodes are constrained, and how many nodes of each block are. */
+    struct NodeBlocks
+    {
+      std::vector<unsigned int> block;
+      std::vector<bool>         constrained;
+      std::vector<unsigned int> n_constrained;
+
+      NodeBlocks(const CrackableMesh &mesh,
+                 const DofMap        &dof_map,
+                 const Constraints   &constraints)
+        : block(dof_map.node_dofs.size(), numbers::invalid_unsigned_int)
+        , constrained(dof_map.node_dofs.size(), false)
+        , n_constrained(mesh.n_blocks(), 0)
+      {
+        for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
+          {
+            const auto *dofs = dof_map.dofs_of_cell(c);
+            for (unsigned int i = 0; i < dof_map.dofs_per_cell; ++i)
+              block[dof_map.dof_to_node[dofs[i]]] = mesh.block_of_cell(c);
+          }
+        for (const auto &node : constraints.constrained_nodes())
+          {
+            const unsigned int n = dof_map.dof_to_node[node.dofs[0]];
+            if (!constrained[n])
+              ++n_constrained[block[n]];
+            constrained[n] = true;
+          }
+      }
+    };
+
+
 
     /** The sum of row @p row of @p matrix. */
     double
@@ -92,6 +125,101 @@ namespace ndda
 
 
 
+  namespace
+  {
+    /** block_rotations() with the nodes' blocks known. */
+    std::vector<double>
+    rotations(const CrackableMesh  &mesh,
+              const DofMap         &dof_map,
+              const StressField    &stresses,
+              const NodeBlocks     &nodes,
+              const Vector<double> &d)
+    {
+      std::vector<double> spin(mesh.n_blocks(), 0.), area(mesh.n_blocks(), 0.);
+      for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
+        {
+          const auto [s, a] = stresses.cell_rotation(c, d);
+          spin[mesh.block_of_cell(c)] += s;
+          area[mesh.block_of_cell(c)] += a;
+        }
+      std::vector<double> rotation(mesh.n_blocks(), 0.);
+      for (unsigned int b = 0; b < rotation.size(); ++b)
+        if (area[b] > 0. && nodes.n_constrained[b] <= 1)
+          rotation[b] = spin[b] / area[b];
+      return rotation;
+    }
+  } // namespace
+
+
+
+  std::vector<double>
+  block_rotations(const CrackableMesh  &mesh,
+                  const DofMap         &dof_map,
+                  const StressField    &stresses,
+                  const Constraints    &constraints,
+                  const Vector<double> &d)
+  {
+    return rotations(
+      mesh, dof_map, stresses, NodeBlocks(mesh, dof_map, constraints), d);
+  }
+
+
+
+  void
+  add_rotation_correction(const CrackableMesh       &mesh,
+                          const DofMap              &dof_map,
+                          const ElementCache<2>     &element_cache,
+                          const BlockFrames         &frames,
+                          const std::vector<double> &rotation,
+                          const Vector<double>      &d,
+                          Vector<double>            &rhs)
+  {
+    // Per cell of a turning block, v = (I - R^T) d + theta R^T J (x - x_0)
+    // at its nodes (x_0 its first node: K takes no force from a constant),
+    // in the frame of the block; k v is the cell's share of Q K Q^T v.
+    const std::vector<Point<2>> position =
+      node_positions(mesh, dof_map, element_cache);
+    const unsigned int  n_dofs = dof_map.dofs_per_cell;
+    Vector<double>      z(rhs.size());
+    std::vector<double> v(n_dofs), kv(n_dofs);
+    for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
+      {
+        const double theta = rotation[mesh.block_of_cell(c)];
+        if (theta == 0.)
+          continue;
+        const auto [cos_minus_one, sin] = rotation::cos_minus_one_sin(theta);
+        const double    cos             = 1. + cos_minus_one;
+        const auto     *dofs            = dof_map.dofs_of_cell(c);
+        const Point<2> &origin = position[dof_map.dof_to_node[dofs[0]]];
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const unsigned int node = dof_map.dof_to_node[dofs[i]];
+            const auto        &nd   = dof_map.node_dofs[node];
+            const double       dx = d[nd[0]], dy = d[nd[1]];
+            const Tensor<1, 2> r = position[node] - origin;
+            // a = d - R^T (d - theta J r), global components
+            const double bx = dx + theta * r[1], by = dy - theta * r[0];
+            const double ax     = dx - (cos * bx + sin * by);
+            const double ay     = dy - (-sin * bx + cos * by);
+            const auto [qc, qs] = frames.node_rotation(node);
+            v[i] = dof_map.local_component[i] == 0 ? qc * ax + qs * ay :
+                                                     -qs * ax + qc * ay;
+          }
+        const auto &k = element_cache[c].stiffness;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            double sum = 0;
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              sum += k(i, j) * v[j];
+            z[dofs[i]] += sum;
+          }
+      }
+    frames.to_global(z);
+    rhs += z;
+  }
+
+
+
   std::vector<double>
   rotate_blocks(const CrackableMesh        &mesh,
                 const DofMap               &dof_map,
@@ -99,35 +227,21 @@ namespace ndda
                 const StressField          &stresses,
                 const Constraints          &constraints,
                 const SparseMatrix<double> &mass,
+                const double                dt,
                 Vector<double>             &d,
                 Vector<double>             &velocity,
                 Vector<double>             &inertia_force)
   {
-    const unsigned int        n_nodes = dof_map.node_dofs.size();
-    std::vector<Block>        blocks(mesh.n_blocks());
-    std::vector<unsigned int> node_block(n_nodes,
-                                         numbers::invalid_unsigned_int);
-    for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
-      {
-        const auto [spin, area] = stresses.cell_rotation(c, d);
-        Block &block            = blocks[mesh.block_of_cell(c)];
-        block.spin += spin;
-        block.area += area;
-        const auto *dofs = dof_map.dofs_of_cell(c);
-        for (unsigned int i = 0; i < dof_map.dofs_per_cell; ++i)
-          node_block[dof_map.dof_to_node[dofs[i]]] = mesh.block_of_cell(c);
-      }
-    std::vector<bool> constrained(n_nodes, false);
-    for (const auto &node : constraints.constrained_nodes())
-      {
-        const unsigned int n = dof_map.dof_to_node[node.dofs[0]];
-        if (!constrained[n])
-          ++blocks[node_block[n]].constrained;
-        constrained[n] = true;
-      }
+    const unsigned int n_nodes = dof_map.node_dofs.size();
+    const NodeBlocks   nodes(mesh, dof_map, constraints);
+    const auto        &node_block  = nodes.block;
+    const auto        &constrained = nodes.constrained;
+    std::vector<Block> blocks(mesh.n_blocks());
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      blocks[b].constrained = nodes.n_constrained[b];
 
-    // The centre of each block, its velocity and acceleration: the
-    // mass-weighted means over its nodes, or the plain means over its
+    // The centre of each block, its velocity, acceleration and increment:
+    // the mass-weighted means over its nodes, or the plain means over its
     // constrained nodes. Nodal masses are the row sums of the mass matrix
     // (1^T M v is the momentum for the consistent mass too).
     const std::vector<Point<2>> position =
@@ -146,14 +260,20 @@ namespace ndda
                        node_mass[n],
                        Tensor<1, 2>({velocity[dofs[0]], velocity[dofs[1]]}),
                        Tensor<1, 2>(
-                         {inertia_force[dofs[0]], inertia_force[dofs[1]]}));
+                         {inertia_force[dofs[0]], inertia_force[dofs[1]]}),
+                       Tensor<1, 2>({d[dofs[0]], d[dofs[1]]}));
       }
 
-    std::vector<double> rotation(blocks.size());
+    std::vector<double> rotation = rotations(mesh, dof_map, stresses, nodes, d);
     for (unsigned int b = 0; b < blocks.size(); ++b)
-      if (blocks[b].weight > 0. && blocks[b].area > 0. &&
-          blocks[b].constrained <= 1)
-        rotation[b] = blocks[b].spin / blocks[b].area;
+      if (blocks[b].weight == 0.)
+        rotation[b] = 0.;
+    // Each node's deformation over the step (turned to its end) and its
+    // position from the centre (turned): the sums of their mass-weighted
+    // products over each block.
+    std::vector<Tensor<1, 2>> deformation(n_nodes), radial(n_nodes);
+    std::vector<double>       radial_deformation(blocks.size(), 0.),
+      radial_size(blocks.size(), 0.);
 
     for (unsigned int n = 0; n < n_nodes; ++n)
       {
@@ -165,16 +285,47 @@ namespace ndda
         const auto [cos_minus_one, sin] = rotation::cos_minus_one_sin(theta);
         const auto        &dofs         = dof_map.node_dofs[n];
         const Tensor<1, 2> r = position[n] - block.position / block.weight;
+        // The node's deformation over the step, w = d - d_c - theta J r,
+        // turned to the step's end: R w.
+        const double c = 1. + cos_minus_one;
+        const double wx =
+          d[dofs[0]] - block.increment[0] / block.weight + theta * r[1];
+        const double wy =
+          d[dofs[1]] - block.increment[1] / block.weight - theta * r[0];
+        const Tensor<1, 2> turned_w({c * wx - sin * wy, sin * wx + c * wy});
         // (R - I - theta J) r: the exact rotation less the linear one.
         d[dofs[0]] += cos_minus_one * r[0] - (sin - theta) * r[1];
         d[dofs[1]] += cos_minus_one * r[1] + (sin - theta) * r[0];
-        const double c = 1. + cos_minus_one;
         turn_about(velocity, dofs, block.velocity / block.weight, c, sin);
+        deformation[n] = turned_w;
+        radial[n] =
+          Tensor<1, 2>({c * r[0] - sin * r[1], sin * r[0] + c * r[1]});
+        radial_deformation[node_block[n]] +=
+          node_mass[n] * (radial[n] * turned_w);
+        radial_size[node_block[n]] += node_mass[n] * (radial[n] * radial[n]);
         turn_about(inertia_force,
                    dofs,
                    node_mass[n] * block.acceleration / block.weight,
                    c,
                    sin);
+      }
+
+    // The Coriolis term that turning leaves out: the block's spin
+    // theta / dt times J R w, without the part of w along the radial
+    // field R r, which would change the block's spin (doc/theory.md,
+    // "Spin and strain").
+    for (unsigned int n = 0; n < n_nodes; ++n)
+      {
+        const unsigned int b = node_block[n];
+        if (b == numbers::invalid_unsigned_int || rotation[b] == 0.)
+          continue;
+        const Tensor<1, 2> w =
+          deformation[n] -
+          (radial_size[b] > 0. ? radial_deformation[b] / radial_size[b] : 0.) *
+            radial[n];
+        const auto &dofs = dof_map.node_dofs[n];
+        velocity[dofs[0]] += rotation[b] / dt * w[1];
+        velocity[dofs[1]] -= rotation[b] / dt * w[0];
       }
     return rotation;
   }

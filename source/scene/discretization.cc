@@ -170,6 +170,18 @@ namespace ndda
 
 
 
+    std::vector<bool>
+    Discretization::straining_blocks() const
+    {
+      std::vector<bool> straining(mesh.n_blocks(), true);
+      for (unsigned int c = 0; c < cell_model.size(); ++c)
+        if (!cell_model[c]->strains())
+          straining[mesh.block_of_cell(c)] = false;
+      return straining;
+    }
+
+
+
     void
     Discretization::setup_system(const parameters::Parameters &parameters)
     {

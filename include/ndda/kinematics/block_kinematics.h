@@ -81,6 +81,16 @@ namespace ndda
         return false;
       }
 
+      /**
+       * Whether the space holds strains (then the block's element
+       * matrices act on its increments): true but for the rigid model.
+       */
+      virtual bool
+      strains() const
+      {
+        return true;
+      }
+
       /** For messages (PluginRegistry). */
       static const char *
       plugin_kind()
@@ -175,6 +185,12 @@ namespace ndda
       basis(const dealii::Tensor<1, 2> &r,
             double                     *row_x,
             double                     *row_y) const override;
+
+      bool
+      strains() const override
+      {
+        return false;
+      }
     };
 
   } // namespace kinematics

@@ -18,6 +18,8 @@
 
 namespace ndda
 {
+  class BlockFrames;
+
   /**
    * The finite rotation of every block over a step, as DDA post-corrects
    * its block rotation (doc/theory.md, "Finite rotation"). The linear
@@ -33,7 +35,12 @@ namespace ndda
    * - @p velocity and @p inertia_force (the integrator's end state, from
    *   the linear d) turn by R(theta) relative to the centre: the block's
    *   motion turns with it (the centripetal acceleration of the rigid
-   *   rotation).
+   *   rotation);
+   * - @p velocity takes the Coriolis term that the turn leaves out,
+   *   -(theta / dt) J R w (@p dt the step), w the deformation in d,
+   *   less its part along the radial field r, which would change the
+   *   block's spin: without it two strain modes of the same frequency (a
+   *   square's two shears) flutter (doc/theory.md, "Spin and strain").
    *
    * The centre is the block's centre of mass (nodal masses: the row sums
    * of @p mass), which the correction does not move, so momentum is kept;
@@ -54,9 +61,45 @@ namespace ndda
                 const StressField          &stresses,
                 const Constraints          &constraints,
                 const SparseMatrix<double> &mass,
+                const double                dt,
                 Vector<double>             &d,
                 Vector<double>             &velocity,
                 Vector<double>             &inertia_force);
+
+
+  /**
+   * The rotation theta of every block in the increment @p d: the
+   * area-weighted mean rotation of its cells (from @p stresses, on the
+   * present geometry); 0 for a block with two or more constrained nodes
+   * (@p constraints), as rotate_blocks() leaves it.
+   */
+  std::vector<double>
+  block_rotations(const CrackableMesh  &mesh,
+                  const DofMap         &dof_map,
+                  const StressField    &stresses,
+                  const Constraints    &constraints,
+                  const Vector<double> &d);
+
+
+  /**
+   * Add to a step's right-hand side @p rhs the stiffness force that the
+   * solve of increment @p d gave its blocks' rotations @p rotation
+   * (block_rotations(); 0: leave the block) and should not have
+   * (doc/theory.md, "Spin and strain"). The element matrices, kept in
+   * the blocks' @p frames, take the force Q K Q^T d; the step's end has
+   * the stresses turned by R(theta) and strained by the deformation
+   * w = d - theta J x alone, whose force on the turned block is
+   * Q K Q^T R^T w. So the solve counted z = Q K Q^T (d - R^T w) too much;
+   * solved again with rhs + z, the step is consistent to O(theta^2).
+   */
+  void
+  add_rotation_correction(const CrackableMesh       &mesh,
+                          const DofMap              &dof_map,
+                          const ElementCache<2>     &element_cache,
+                          const BlockFrames         &frames,
+                          const std::vector<double> &rotation,
+                          const Vector<double>      &d,
+                          Vector<double>            &rhs);
 
 
   /**

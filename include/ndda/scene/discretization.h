@@ -114,6 +114,11 @@ namespace ndda
       std::vector<bool>
       meshed_blocks() const;
 
+      /** Whether each block's model holds strains now (all but rigid
+       * blocks: BlockKinematics::strains()). */
+      std::vector<bool>
+      straining_blocks() const;
+
       /**
        * After setup_constraints(), on the present geometry: the blocks'
        * frames, the reduced blocks (rigid, affine) tied to their unknowns,
