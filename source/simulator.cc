@@ -137,6 +137,9 @@ namespace ndda
                                                   scene_half_height,
                                                   contacts);
         contacts.set_frames(&fem.frames);
+        std::vector<bool> reduced = fem.meshed_blocks();
+        reduced.flip();
+        contacts.set_reduced_blocks(reduced);
       }
   }
 

@@ -110,6 +110,12 @@ namespace ndda
   {
     fem.setup_system(parameters);
     block_lines_stale = false;
+    if (parameters.contact.enabled)
+      {
+        std::vector<bool> reduced = fem.meshed_blocks();
+        reduced.flip();
+        contacts.set_reduced_blocks(reduced);
+      }
     fracture_check.setup(mesh,
                          fem.cell_material,
                          scene::material_strengths(parameters.materials),

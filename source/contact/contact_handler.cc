@@ -79,6 +79,14 @@ namespace ndda
 
 
     void
+    ContactHandler::set_reduced_blocks(const std::vector<bool> &reduced)
+    {
+      reduced_block = reduced;
+    }
+
+
+
+    void
     ContactHandler::begin_step(const std::vector<Point<2>> &vertices,
                                const double                 threshold,
                                const double                 min_skin)

@@ -197,6 +197,22 @@ namespace ndda
             n += edge_normal[f];
           vertex_normal[v] = n;
         }
+      // A vertex inside a straight face of a rigid or affine block: two
+      // collinear edges (to rounding: the face moves as a whole).
+      passive.assign(edges_at_vertex.size(), false);
+      if (reduced_block.empty() ||
+          settings.law->bonds_initial_contacts(settings))
+        return;
+      for (unsigned int v = 0; v < edges_at_vertex.size(); ++v)
+        if (const auto &at = edges_at_vertex[v];
+            at.size() == 2 && edges[at[0]].block == edges[at[1]].block &&
+            edges[at[0]].block < reduced_block.size() &&
+            reduced_block[edges[at[0]].block])
+          {
+            const Tensor<1, 2> &n0 = edge_normal[at[0]];
+            const Tensor<1, 2> &n1 = edge_normal[at[1]];
+            passive[v] = n0 * n1 > 0 && std::abs(cross(n0, n1)) < 1e-8;
+          }
     }
 
 
@@ -266,7 +282,7 @@ namespace ndda
       boost::container::small_vector<const Candidate *, 8> list;
       for (auto c = first; c != last; ++c)
         {
-          if (c->type != CandidateType::vertex_edge ||
+          if (c->type != CandidateType::vertex_edge || passive[c->vertex] ||
               in_cell(c->vertex, c->edge) || !facing(c->vertex, c->edge))
             continue;
           if (c->distance < -settings.ignore_depth &&
@@ -380,7 +396,7 @@ namespace ndda
       // test is the pair's, made once for each pair.
       std::vector<std::pair<unsigned int, unsigned int>> found;
       for (const Candidate &c : candidates)
-        if (c.type == CandidateType::vertex_vertex &&
+        if (c.type == CandidateType::vertex_vertex && !passive[c.vertex] &&
             !in_cell(c.vertex, c.edge))
           found.push_back(std::minmax(c.vertex,
                                       c.edge_ratio < 0.5 ? edges[c.edge].v0 :
@@ -399,15 +415,15 @@ namespace ndda
           // A vertex-edge contact at the other vertex holds the pair,
           // unless faces lie on each other there and the other vertex has
           // no contact yet: it gets its own from the pair
-          // (add_edge_edge_contacts()).
+          // (add_face_contact()).
           const bool a_at_b = has_vertex_edge_at(vertex_edge, a, b);
           const bool b_at_a = has_vertex_edge_at(vertex_edge, b, a);
           if (a_at_b && b_at_a)
             continue;
           const bool held = a_at_b || b_at_a;
           if ((held && !faces_meet(vertices, a, b)) ||
-              nearer_elsewhere(vertices, candidates, a, b) ||
-              nearer_elsewhere(vertices, candidates, b, a))
+              (!passive[a] && nearer_elsewhere(vertices, candidates, a, b)) ||
+              (!passive[b] && nearer_elsewhere(vertices, candidates, b, a)))
             continue;
           pairs.push_back({a, b, held || faces_meet(vertices, a, b)});
         }
@@ -424,8 +440,17 @@ namespace ndda
     {
       for (const VertexPair &p :
            vertex_vertex_pairs(vertices, candidates, vertex_edge))
-        if (p.faces_meet)
-          add_edge_edge_contacts(vertices, vertex_edge, p.a, p.b);
+        if (passive[p.a] || passive[p.b])
+          {
+            // A vertex on a straight face of a rigid or affine block.
+            const unsigned int w = passive[p.a] ? p.a : p.b;
+            add_face_contact(vertices, vertex_edge, p.a + p.b - w, w);
+          }
+        else if (p.faces_meet)
+          {
+            add_face_contact(vertices, vertex_edge, p.a, p.b);
+            add_face_contact(vertices, vertex_edge, p.b, p.a);
+          }
         else
           add_vertex_vertex_contact(vertices, p.a, p.b);
     }
@@ -469,45 +494,42 @@ namespace ndda
 
 
     void
-    ContactHandler::add_edge_edge_contacts(
-      const std::vector<Point<2>>   &vertices,
-      const std::vector<VertexEdge> &vertex_edge,
-      const unsigned int             a,
-      const unsigned int             b)
+    ContactHandler::add_face_contact(const std::vector<Point<2>>   &vertices,
+                                     const std::vector<VertexEdge> &vertex_edge,
+                                     const unsigned int             v,
+                                     const unsigned int             w)
     {
-      for (const auto &[v, w] : {std::make_pair(a, b), std::make_pair(b, a)})
-        {
-          // One contact for each vertex: none if it already touches an
-          // edge at w (the pair was found from the other vertex's side, or
-          // this vertex projects just inside one of w's edges).
-          if (has_vertex_edge_at(vertex_edge, v, w))
-            continue;
-          // Of the faces at w that lie on a face at v, the one v projects
-          // farthest into (at a straight vertex w, v lies just inside one
-          // of its two edges and just beyond the other).
-          unsigned int best   = invalid;
-          double       inside = 0, ratio = 0;
-          for (const unsigned int e : edges_at_vertex[w])
-            if (parallel_faces(vertices, v, w, e))
-              {
-                const Tensor<1, 2> t =
-                  vertices[edges[e].v1] - vertices[edges[e].v0];
-                const double r =
-                  ((vertices[v] - vertices[edges[e].v0]) * t) / t.norm_square();
-                if (best == invalid || std::min(r, 1. - r) > inside)
-                  best = e, inside = std::min(r, 1. - r), ratio = r;
-              }
-          if (best == invalid || ratio < -1e-3 || ratio > 1. + 1e-3)
-            continue; // v is beyond the faces: no overlap
-          const Option o = make_option(vertices, v, best);
-          if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
-            continue;
-          if (o.gap < -settings.ignore_depth && !remembered(vertices, v, best))
-            continue; // the other side of a thin body
-          ContactPair &face = contacts.emplace_back();
-          face.options.push_back(o);
-          face.friction = std::min(vertex_friction[a], vertex_friction[b]);
-        }
+      // None if v already touches an edge at w (the pair was found from
+      // the other vertex's side, or v projects just inside one of w's
+      // edges).
+      if (has_vertex_edge_at(vertex_edge, v, w))
+        return;
+      // Of the faces at w that lie on a face at v (at a passive w: that v
+      // faces), the one v projects farthest into (at a straight vertex w,
+      // v lies just inside one of its two edges and just beyond the
+      // other).
+      unsigned int best   = invalid;
+      double       inside = 0, ratio = 0;
+      for (const unsigned int e : edges_at_vertex[w])
+        if (passive[w] ? facing(v, e) : parallel_faces(vertices, v, w, e))
+          {
+            const Tensor<1, 2> t =
+              vertices[edges[e].v1] - vertices[edges[e].v0];
+            const double r =
+              ((vertices[v] - vertices[edges[e].v0]) * t) / t.norm_square();
+            if (best == invalid || std::min(r, 1. - r) > inside)
+              best = e, inside = std::min(r, 1. - r), ratio = r;
+          }
+      if (best == invalid || ratio < -1e-3 || ratio > 1. + 1e-3)
+        return; // v is beyond the faces: no overlap
+      const Option o = make_option(vertices, v, best);
+      if (o.ratio < -1e-6 || o.ratio > 1. + 1e-6)
+        return;
+      if (o.gap < -settings.ignore_depth && !remembered(vertices, v, best))
+        return; // the other side of a thin body
+      ContactPair &face = contacts.emplace_back();
+      face.options.push_back(o);
+      face.friction = std::min(vertex_friction[v], vertex_friction[w]);
     }
 
 

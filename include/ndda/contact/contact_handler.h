@@ -102,6 +102,18 @@ namespace ndda
       void
       carry_memory_from(const ContactHandler &old);
 
+      /**
+       * The blocks that are rigid or affine (@p reduced, by block index):
+       * their faces stay straight, so that a vertex inside a straight face
+       * (two collinear boundary edges) adds nothing that the face's
+       * corners do not hold, and is not a contact vertex (doc/contact.md,
+       * "Straight faces of rigid and affine blocks"). Its edges stay, for
+       * the other blocks' vertices. Not where joints are bonded: a bonded
+       * joint is tied at every vertex of its finer side.
+       */
+      void
+      set_reduced_blocks(const std::vector<bool> &reduced);
+
       /** Change the normal stiffness (automatic penalty). */
       void
       set_normal_stiffness(const double k);
@@ -374,7 +386,8 @@ namespace ndda
       /**
        * The outward unit normal of every boundary edge and their sum at
        * every vertex, on the @p vertices of the step: made once at the
-       * start of the narrow phase, for facing() and the corner tests.
+       * start of the narrow phase, for facing() and the corner tests; and
+       * which vertices are passive (set_reduced_blocks()).
        */
       void
       compute_normals(const std::vector<Point<2>> &vertices);
@@ -504,21 +517,28 @@ namespace ndda
                  const unsigned int           b) const;
 
       /**
-       * Edge-edge: faces at @p a and @p b lie on each other. Nothing is
-       * indeterminate then: each vertex touches the other's face there, two
-       * vertex-edge contacts (one per vertex: at a straight vertex, the
-       * face it projects into). Both are kept, also where one of them is
-       * already a vertex-edge contact, so that the pair has the same two
-       * springs whichever vertex rounding puts exactly at the other's end,
-       * and when the corners move apart the one whose vertex slides onto
-       * the other's edge goes on with its state, and no contact appears
-       * already compressed.
+       * The contact of vertex @p v of a vertex pair on a face at vertex
+       * @p w: on the edge at @p w that @p v projects farthest into, among
+       * those that lie on a face at @p v (parallel_faces()), or, if @p w is
+       * passive (set_reduced_blocks()), that @p v faces; none if @p v
+       * already touches an edge at @p w, lies beyond the faces, or is new
+       * and deep behind the face (a thin body's other side).
+       *
+       * Edge-edge (faces at the two vertices lie on each other) is
+       * nothing indeterminate: each vertex touches the other's face there,
+       * one such contact for each. Both are kept, also where one of them
+       * is already a vertex-edge contact, so that the pair has the same
+       * two springs whichever vertex rounding puts exactly at the other's
+       * end, and when the corners move apart the one whose vertex slides
+       * onto the other's edge goes on with its state, and no contact
+       * appears already compressed. A vertex at a passive vertex is a
+       * vertex on a straight face: one contact, of the vertex.
        */
       void
-      add_edge_edge_contacts(const std::vector<Point<2>>   &vertices,
-                             const std::vector<VertexEdge> &vertex_edge,
-                             const unsigned int             a,
-                             const unsigned int             b);
+      add_face_contact(const std::vector<Point<2>>   &vertices,
+                       const std::vector<VertexEdge> &vertex_edge,
+                       const unsigned int             v,
+                       const unsigned int             w);
 
       /**
        * A vertex-vertex contact of @p a and @p b with the facing edges at
@@ -697,6 +717,11 @@ namespace ndda
       /// at the vertices, on the vertices of the step (compute_normals()).
       std::vector<Tensor<1, 2>> edge_normal;
       std::vector<Tensor<1, 2>> vertex_normal;
+      /// The rigid and affine blocks (set_reduced_blocks()), and the
+      /// vertices of the step that are not contact vertices: inside a
+      /// straight face of such a block (compute_normals()).
+      std::vector<bool> reduced_block;
+      std::vector<bool> passive;
       /// Detection's broad phase, kept while the vertices move little.
       NeighbourList neighbours;
       /// Mean boundary edge length of every block (m).
