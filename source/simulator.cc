@@ -137,9 +137,7 @@ namespace ndda
                                                   scene_half_height,
                                                   contacts);
         contacts.set_frames(&fem.frames);
-        std::vector<bool> reduced = fem.meshed_blocks();
-        reduced.flip();
-        contacts.set_reduced_blocks(reduced);
+        contacts.set_reduced_blocks(fem.reduced_mesh_blocks());
       }
   }
 
@@ -239,23 +237,35 @@ namespace ndda
     // The element matrices count the rotation of a strained block as
     // strain, which the step's end does not have: take that force out
     // and solve once more (doc/theory.md, "Spin and strain").
-    const std::vector<bool> straining = fem.straining_blocks();
-    bool                    turned    = false;
-    std::vector<double>     rotation;
+    // The blocks' rotations in d are kept for commit_step().
+    const std::vector<bool> &straining = fem.straining_blocks();
+    solved_rotation.clear();
     if (std::find(straining.begin(), straining.end(), true) != straining.end())
-      rotation =
-        block_rotations(mesh, fem.dof_map, stresses, fem.constraints, d);
-    for (unsigned int b = 0; b < rotation.size(); ++b)
-      if (!straining[b] || std::abs(rotation[b]) <= min_corrected_rotation)
-        rotation[b] = 0.;
-      else
-        turned = true;
-    if (turned)
       {
-        add_rotation_correction(
-          mesh, fem.dof_map, fem.element_cache, fem.frames, rotation, d, rhs);
-        if (!solve())
-          return time::AttemptResult::not_settled;
+        solved_rotation =
+          block_rotations(mesh, fem.dof_map, stresses, fem.block_nodes, d);
+        std::vector<double> correction(solved_rotation);
+        bool                turned = false;
+        for (unsigned int b = 0; b < correction.size(); ++b)
+          if (!straining[b] ||
+              std::abs(correction[b]) <= min_corrected_rotation)
+            correction[b] = 0.;
+          else
+            turned = true;
+        if (turned)
+          {
+            add_rotation_correction(mesh,
+                                    fem.dof_map,
+                                    fem.element_cache,
+                                    fem.frames,
+                                    correction,
+                                    d,
+                                    rhs);
+            if (!solve())
+              return time::AttemptResult::not_settled;
+            solved_rotation =
+              block_rotations(mesh, fem.dof_map, stresses, fem.block_nodes, d);
+          }
       }
     return check_increment(d);
   }
@@ -321,8 +331,8 @@ namespace ndda
                     fem.dof_map,
                     fem.element_cache,
                     stresses,
-                    fem.constraints,
-                    mass,
+                    fem.block_nodes,
+                    solved_rotation,
                     dt,
                     motion,
                     kinematics.velocity,

@@ -112,9 +112,7 @@ namespace ndda
     block_lines_stale = false;
     if (parameters.contact.enabled)
       {
-        std::vector<bool> reduced = fem.meshed_blocks();
-        reduced.flip();
-        contacts.set_reduced_blocks(reduced);
+        contacts.set_reduced_blocks(fem.reduced_mesh_blocks());
       }
     fracture_check.setup(mesh,
                          fem.cell_material,

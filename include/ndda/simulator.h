@@ -502,6 +502,9 @@ namespace ndda
     /// it turned: set the system up again before the next step.
     bool block_lines_stale    = false;
     bool parameters_from_file = false;
+    /// The blocks' rotations in the increment of the last attempt
+    /// (block_rotations()), if it computed them, for commit_step().
+    std::vector<double> solved_rotation;
 
     /// Kinematics = auto: which blocks are promoted and demoted.
     ndda::kinematics::AutomaticKinematics automatic;

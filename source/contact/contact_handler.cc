@@ -21,6 +21,30 @@ namespace ndda
 {
   namespace contact
   {
+    namespace
+    {
+      /**
+       * Where the entries of every vertex (of @p n_vertices) begin in
+       * @p list, sorted by the vertex @p vertex_of gives an entry:
+       * @p start[v] to @p start[v + 1].
+       */
+      template <typename List, typename VertexOf>
+      void
+      index_by_vertex(const unsigned int         n_vertices,
+                      const List                &list,
+                      const VertexOf            &vertex_of,
+                      std::vector<unsigned int> &start)
+      {
+        start.assign(n_vertices + 1, 0);
+        for (const auto &entry : list)
+          ++start[vertex_of(entry) + 1];
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          start[v + 1] += start[v];
+      }
+    } // namespace
+
+
+
     void
     ContactHandler::initialize(const std::vector<BoundaryEdge> &edges_in,
                                const std::vector<double>       &friction_in,
@@ -101,11 +125,21 @@ namespace ndda
       const std::vector<Candidate> candidates =
         neighbours.detect(vertices, edges, threshold, min_skin);
       statistics.n_candidates = candidates.size();
+      index_by_vertex(
+        vertices.size(),
+        candidates,
+        [](const Candidate &c) { return c.vertex; },
+        candidate_start);
 
       // The narrow phase, one contact type after the other.
       compute_normals(vertices);
       const std::vector<VertexEdge> vertex_edge =
         vertex_edge_pairs(vertices, candidates);
+      index_by_vertex(
+        vertices.size(),
+        vertex_edge,
+        [](const VertexEdge &p) { return p.first; },
+        vertex_edge_start);
       add_vertex_edge_contacts(vertices, vertex_edge);
       add_vertex_vertex_contacts(vertices, candidates, vertex_edge);
 

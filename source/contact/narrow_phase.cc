@@ -344,14 +344,12 @@ namespace ndda
       const unsigned int             vertex,
       const unsigned int             corner) const
     {
-      const auto range = std::equal_range(vertex_edge.begin(),
-                                          vertex_edge.end(),
-                                          std::make_pair(vertex, 0u),
-                                          [](const auto &x, const auto &y) {
-                                            return x.first < y.first;
-                                          });
-      for (auto it = range.first; it != range.second; ++it)
-        if (edges[it->second].v0 == corner || edges[it->second].v1 == corner)
+      AssertDimension(vertex_edge_start.back(), vertex_edge.size());
+      for (unsigned int i = vertex_edge_start[vertex];
+           i < vertex_edge_start[vertex + 1];
+           ++i)
+        if (const BoundaryEdge &e = edges[vertex_edge[i].second];
+            e.v0 == corner || e.v1 == corner)
           return true;
       return false;
     }
@@ -367,14 +365,12 @@ namespace ndda
       const double reach =
         (1. - 1e-6) * vertices[vertex].distance(vertices[other]);
       const unsigned int block = edges[edges_at_vertex[other][0]].block;
-      // The candidates are sorted by vertex.
-      const auto first = std::partition_point(candidates.begin(),
-                                              candidates.end(),
-                                              [vertex](const Candidate &c) {
-                                                return c.vertex < vertex;
-                                              });
-      for (auto c = first; c != candidates.end() && c->vertex == vertex; ++c)
+      AssertDimension(candidate_start.back(), candidates.size());
+      for (unsigned int i = candidate_start[vertex];
+           i < candidate_start[vertex + 1];
+           ++i)
         {
+          const Candidate    *c = &candidates[i];
           const BoundaryEdge &e = edges[c->edge];
           if (e.block == block && e.v0 != other && e.v1 != other &&
               std::abs(c->distance) < reach && !in_cell(vertex, c->edge) &&

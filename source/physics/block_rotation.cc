@@ -62,39 +62,6 @@ namespace ndda
       return position;
     }
 
-    /** The block of every node (invalid for a node of no cell), which
-     * nodes are constrained, and how many nodes of each block are. */
-    struct NodeBlocks
-    {
-      std::vector<unsigned int> block;
-      std::vector<bool>         constrained;
-      std::vector<unsigned int> n_constrained;
-
-      NodeBlocks(const CrackableMesh &mesh,
-                 const DofMap        &dof_map,
-                 const Constraints   &constraints)
-        : block(dof_map.node_dofs.size(), numbers::invalid_unsigned_int)
-        , constrained(dof_map.node_dofs.size(), false)
-        , n_constrained(mesh.n_blocks(), 0)
-      {
-        for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
-          {
-            const auto *dofs = dof_map.dofs_of_cell(c);
-            for (unsigned int i = 0; i < dof_map.dofs_per_cell; ++i)
-              block[dof_map.dof_to_node[dofs[i]]] = mesh.block_of_cell(c);
-          }
-        for (const auto &node : constraints.constrained_nodes())
-          {
-            const unsigned int n = dof_map.dof_to_node[node.dofs[0]];
-            if (!constrained[n])
-              ++n_constrained[block[n]];
-            constrained[n] = true;
-          }
-      }
-    };
-
-
-
     /** The sum of row @p row of @p matrix. */
     double
     row_sum(const SparseMatrix<double>   &matrix,
@@ -125,30 +92,34 @@ namespace ndda
 
 
 
-  namespace
+  void
+  BlockNodes::setup(const CrackableMesh        &mesh,
+                    const DofMap               &dof_map,
+                    const Constraints          &constraints,
+                    const SparseMatrix<double> &mass_matrix)
   {
-    /** block_rotations() with the nodes' blocks known. */
-    std::vector<double>
-    rotations(const CrackableMesh  &mesh,
-              const DofMap         &dof_map,
-              const StressField    &stresses,
-              const NodeBlocks     &nodes,
-              const Vector<double> &d)
-    {
-      std::vector<double> spin(mesh.n_blocks(), 0.), area(mesh.n_blocks(), 0.);
-      for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
-        {
-          const auto [s, a] = stresses.cell_rotation(c, d);
-          spin[mesh.block_of_cell(c)] += s;
-          area[mesh.block_of_cell(c)] += a;
-        }
-      std::vector<double> rotation(mesh.n_blocks(), 0.);
-      for (unsigned int b = 0; b < rotation.size(); ++b)
-        if (area[b] > 0. && nodes.n_constrained[b] <= 1)
-          rotation[b] = spin[b] / area[b];
-      return rotation;
-    }
-  } // namespace
+    const unsigned int n_nodes = dof_map.node_dofs.size();
+    block.assign(n_nodes, numbers::invalid_unsigned_int);
+    constrained.assign(n_nodes, false);
+    n_constrained.assign(mesh.n_blocks(), 0);
+    mass.assign(n_nodes, 0.);
+    for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
+      {
+        const auto *dofs = dof_map.dofs_of_cell(c);
+        for (unsigned int i = 0; i < dof_map.dofs_per_cell; ++i)
+          block[dof_map.dof_to_node[dofs[i]]] = mesh.block_of_cell(c);
+      }
+    for (const auto &node : constraints.constrained_nodes())
+      {
+        const unsigned int n = dof_map.dof_to_node[node.dofs[0]];
+        if (!constrained[n])
+          ++n_constrained[block[n]];
+        constrained[n] = true;
+      }
+    for (unsigned int n = 0; n < n_nodes; ++n)
+      if (block[n] != numbers::invalid_unsigned_int)
+        mass[n] = row_sum(mass_matrix, dof_map.node_dofs[n][0]);
+  }
 
 
 
@@ -156,11 +127,21 @@ namespace ndda
   block_rotations(const CrackableMesh  &mesh,
                   const DofMap         &dof_map,
                   const StressField    &stresses,
-                  const Constraints    &constraints,
+                  const BlockNodes     &nodes,
                   const Vector<double> &d)
   {
-    return rotations(
-      mesh, dof_map, stresses, NodeBlocks(mesh, dof_map, constraints), d);
+    std::vector<double> spin(mesh.n_blocks(), 0.), area(mesh.n_blocks(), 0.);
+    for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
+      {
+        const auto [s, a] = stresses.cell_rotation(c, d);
+        spin[mesh.block_of_cell(c)] += s;
+        area[mesh.block_of_cell(c)] += a;
+      }
+    std::vector<double> rotation(mesh.n_blocks(), 0.);
+    for (unsigned int b = 0; b < rotation.size(); ++b)
+      if (area[b] > 0. && nodes.n_constrained[b] <= 1)
+        rotation[b] = spin[b] / area[b];
+    return rotation;
   }
 
 
@@ -221,39 +202,37 @@ namespace ndda
 
 
   std::vector<double>
-  rotate_blocks(const CrackableMesh        &mesh,
-                const DofMap               &dof_map,
-                const ElementCache<2>      &element_cache,
-                const StressField          &stresses,
-                const Constraints          &constraints,
-                const SparseMatrix<double> &mass,
-                const double                dt,
-                Vector<double>             &d,
-                Vector<double>             &velocity,
-                Vector<double>             &inertia_force)
+  rotate_blocks(const CrackableMesh       &mesh,
+                const DofMap              &dof_map,
+                const ElementCache<2>     &element_cache,
+                const StressField         &stresses,
+                const BlockNodes          &nodes,
+                const std::vector<double> &solved_rotation,
+                const double               dt,
+                Vector<double>            &d,
+                Vector<double>            &velocity,
+                Vector<double>            &inertia_force)
   {
     const unsigned int n_nodes = dof_map.node_dofs.size();
-    const NodeBlocks   nodes(mesh, dof_map, constraints);
+    AssertDimension(nodes.block.size(), n_nodes);
     const auto        &node_block  = nodes.block;
     const auto        &constrained = nodes.constrained;
+    const auto        &node_mass   = nodes.mass;
     std::vector<Block> blocks(mesh.n_blocks());
     for (unsigned int b = 0; b < blocks.size(); ++b)
       blocks[b].constrained = nodes.n_constrained[b];
 
     // The centre of each block, its velocity, acceleration and increment:
     // the mass-weighted means over its nodes, or the plain means over its
-    // constrained nodes. Nodal masses are the row sums of the mass matrix
-    // (1^T M v is the momentum for the consistent mass too).
+    // constrained nodes.
     const std::vector<Point<2>> position =
       node_positions(mesh, dof_map, element_cache);
-    std::vector<double> node_mass(n_nodes);
     for (unsigned int n = 0; n < n_nodes; ++n)
       {
         if (node_block[n] == numbers::invalid_unsigned_int)
           continue;
-        const auto &dofs = dof_map.node_dofs[n];
-        node_mass[n]     = row_sum(mass, dofs[0]);
-        Block &block     = blocks[node_block[n]];
+        const auto &dofs  = dof_map.node_dofs[n];
+        Block      &block = blocks[node_block[n]];
         if (block.constrained > 0 && !constrained[n])
           continue;
         block.add_node(position[n],
@@ -264,7 +243,11 @@ namespace ndda
                        Tensor<1, 2>({d[dofs[0]], d[dofs[1]]}));
       }
 
-    std::vector<double> rotation = rotations(mesh, dof_map, stresses, nodes, d);
+    std::vector<double> rotation =
+      solved_rotation.empty() ?
+        block_rotations(mesh, dof_map, stresses, nodes, d) :
+        solved_rotation;
+    AssertDimension(rotation.size(), blocks.size());
     for (unsigned int b = 0; b < blocks.size(); ++b)
       if (blocks[b].weight == 0.)
         rotation[b] = 0.;

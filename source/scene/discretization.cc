@@ -171,13 +171,11 @@ namespace ndda
 
 
     std::vector<bool>
-    Discretization::straining_blocks() const
+    Discretization::reduced_mesh_blocks() const
     {
-      std::vector<bool> straining(mesh.n_blocks(), true);
-      for (unsigned int c = 0; c < cell_model.size(); ++c)
-        if (!cell_model[c]->strains())
-          straining[mesh.block_of_cell(c)] = false;
-      return straining;
+      std::vector<bool> reduced = meshed_blocks();
+      reduced.flip();
+      return reduced;
     }
 
 
@@ -192,6 +190,10 @@ namespace ndda
         mesh.n_blocks(), nullptr);
       for (unsigned int c = 0; c < cell_model.size(); ++c)
         block_model[mesh.block_of_cell(c)] = cell_model[c];
+      straining.assign(mesh.n_blocks(), true);
+      for (unsigned int c = 0; c < cell_model.size(); ++c)
+        if (!cell_model[c]->strains())
+          straining[mesh.block_of_cell(c)] = false;
       reduced_blocks.setup(mesh, dof_map, frames, block_model, constraints);
       constraints.tie_blocks(reduced_blocks);
 
@@ -264,6 +266,10 @@ namespace ndda
     Discretization::assemble(const Vector<double> &displacement)
     {
       linear_system.assemble(element_cache, dof_map, bolts, displacement);
+      block_nodes.setup(mesh,
+                        dof_map,
+                        constraints,
+                        linear_system.get_mass_matrix());
     }
 
 

@@ -446,7 +446,8 @@ namespace ndda
 
       /**
        * Does @p vertex have a vertex-edge contact, among the sorted
-       * @p vertex_edge, on an edge at @p corner?
+       * @p vertex_edge (the step's, indexed in vertex_edge_start), on an
+       * edge at @p corner?
        */
       bool
       has_vertex_edge_at(const std::vector<VertexEdge> &vertex_edge,
@@ -481,7 +482,8 @@ namespace ndda
       /**
        * Has @p vertex a facing candidate, not in its own cell, on an edge of
        * the block of @p other that does not end at @p other, nearer than
-       * @p other (found at any distance that finds the pair)?
+       * @p other (found at any distance that finds the pair)? Among the
+       * step's @p candidates, indexed in candidate_start.
        */
       bool
       nearer_elsewhere(const std::vector<Point<2>>  &vertices,
@@ -722,6 +724,11 @@ namespace ndda
       /// straight face of such a block (compute_normals()).
       std::vector<bool> reduced_block;
       std::vector<bool> passive;
+      /// Where the entries of every vertex begin in the step's candidates
+      /// and vertex-edge pairs, both sorted by vertex (begin_step()), and
+      /// end: at the next vertex's start.
+      std::vector<unsigned int> candidate_start;
+      std::vector<unsigned int> vertex_edge_start;
       /// Detection's broad phase, kept while the vertices move little.
       NeighbourList neighbours;
       /// Mean boundary edge length of every block (m).

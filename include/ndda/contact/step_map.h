@@ -21,11 +21,12 @@ namespace ndda
 
     /**
      * What one step of ContactHandler leaves for the next, looked up by
-     * key: a vector
-     * filled during end_step() and sorted once by finish(), then
-     * searched by bisection. Unlike a hash map it allocates nothing per
-     * entry, and its storage is kept from step to step. An entry added
-     * twice holds its later value, as an assignment to a map would.
+     * key: a vector filled during end_step() and sorted once by finish(),
+     * which also notes where the entries of every first index (a vertex)
+     * begin; a key is then found among its vertex's few entries. Unlike a
+     * hash map it allocates nothing per entry, and its storage is kept
+     * from step to step. An entry added twice holds its later value, as
+     * an assignment to a map would.
      */
     template <typename Value>
     class StepMap
@@ -35,6 +36,7 @@ namespace ndda
       clear()
       {
         entries.clear();
+        start.clear();
       }
 
       void
@@ -57,19 +59,26 @@ namespace ndda
           if (std::next(e) == entries.end() || std::next(e)->first != e->first)
             *last++ = *e;
         entries.erase(last, entries.end());
+        const unsigned int n =
+          entries.empty() ? 0 : std::get<0>(entries.back().first) + 1;
+        start.assign(n + 1, 0);
+        for (const auto &e : entries)
+          ++start[std::get<0>(e.first) + 1];
+        for (unsigned int v = 0; v < n; ++v)
+          start[v + 1] += start[v];
       }
 
       /** The value under @p k, or null. */
       const Value *
       find(const ContactKey &k) const
       {
-        const auto e = std::lower_bound(entries.begin(),
-                                        entries.end(),
-                                        k,
-                                        [](const auto &a, const ContactKey &b) {
-                                          return a.first < b;
-                                        });
-        return e != entries.end() && e->first == k ? &e->second : nullptr;
+        const unsigned int v = std::get<0>(k);
+        if (start.empty() || v >= start.size() - 1)
+          return nullptr;
+        for (unsigned int i = start[v]; i < start[v + 1]; ++i)
+          if (entries[i].first == k)
+            return &entries[i].second;
+        return nullptr;
       }
 
       bool
@@ -80,6 +89,8 @@ namespace ndda
 
     private:
       std::vector<std::pair<ContactKey, Value>> entries;
+      /// The entries of first index v are [start[v], start[v + 1]).
+      std::vector<unsigned int> start;
     };
   } // namespace contact
 } // namespace ndda

@@ -15,10 +15,38 @@
 #include <ndda/physics/stress_field.h>
 
 #include <utility>
+#include <vector>
 
 namespace ndda
 {
   class BlockFrames;
+
+  /**
+   * What the finite rotation of the blocks (rotate_blocks(),
+   * block_rotations()) needs of the nodes and does not change from step
+   * to step: the block of every node (invalid for a node of no cell),
+   * which nodes are constrained and how many of each block are, and every
+   * node's mass (the row sum of the mass matrix: 1^T M v is the momentum
+   * for the consistent mass too). Made again whenever the mass matrix is
+   * (Discretization::assemble()), which follows every change of the mesh
+   * or the constraints.
+   *
+   * @ingroup physics
+   */
+  struct BlockNodes
+  {
+    std::vector<unsigned int> block;
+    std::vector<bool>         constrained;
+    std::vector<unsigned int> n_constrained;
+    std::vector<double>       mass;
+
+    /** Of @p mesh, @p dof_map, @p constraints and @p mass_matrix. */
+    void
+    setup(const CrackableMesh        &mesh,
+          const DofMap               &dof_map,
+          const Constraints          &constraints,
+          const SparseMatrix<double> &mass_matrix);
+  };
 
   /**
    * The finite rotation of every block over a step, as DDA post-corrects
@@ -42,42 +70,43 @@ namespace ndda
    *   block's spin: without it two strain modes of the same frequency (a
    *   square's two shears) flutter (doc/theory.md, "Spin and strain").
    *
-   * The centre is the block's centre of mass (nodal masses: the row sums
-   * of @p mass), which the correction does not move, so momentum is kept;
-   * for a block with one constrained node (@p constraints) it is that
-   * node, so that a pinned block turns about its pin exactly. A block
-   * with two or more constrained nodes is left as solved: its
-   * constraints hold its rotation small, and a correction would move its
-   * constrained nodes off their prescribed values.
+   * The centre is the block's centre of mass (the nodal masses of
+   * @p nodes), which the correction does not move, so momentum is kept;
+   * for a block with one constrained node it is that node, so that a
+   * pinned block turns about its pin exactly. A block with two or more
+   * constrained nodes is left as solved: its constraints hold its
+   * rotation small, and a correction would move its constrained nodes off
+   * their prescribed values.
    *
-   * Returns the rotation theta of every block (0 for those left).
+   * @p rotation is block_rotations() of @p d if the caller has it, else
+   * empty. Returns the rotation theta of every block (0 for those left).
    *
    * @ingroup physics
    */
   std::vector<double>
-  rotate_blocks(const CrackableMesh        &mesh,
-                const DofMap               &dof_map,
-                const ElementCache<2>      &element_cache,
-                const StressField          &stresses,
-                const Constraints          &constraints,
-                const SparseMatrix<double> &mass,
-                const double                dt,
-                Vector<double>             &d,
-                Vector<double>             &velocity,
-                Vector<double>             &inertia_force);
+  rotate_blocks(const CrackableMesh       &mesh,
+                const DofMap              &dof_map,
+                const ElementCache<2>     &element_cache,
+                const StressField         &stresses,
+                const BlockNodes          &nodes,
+                const std::vector<double> &rotation,
+                const double               dt,
+                Vector<double>            &d,
+                Vector<double>            &velocity,
+                Vector<double>            &inertia_force);
 
 
   /**
    * The rotation theta of every block in the increment @p d: the
    * area-weighted mean rotation of its cells (from @p stresses, on the
    * present geometry); 0 for a block with two or more constrained nodes
-   * (@p constraints), as rotate_blocks() leaves it.
+   * (@p nodes), as rotate_blocks() leaves it.
    */
   std::vector<double>
   block_rotations(const CrackableMesh  &mesh,
                   const DofMap         &dof_map,
                   const StressField    &stresses,
-                  const Constraints    &constraints,
+                  const BlockNodes     &nodes,
                   const Vector<double> &d);
 
 

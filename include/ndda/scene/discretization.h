@@ -115,9 +115,17 @@ namespace ndda
       meshed_blocks() const;
 
       /** Whether each block's model holds strains now (all but rigid
-       * blocks: BlockKinematics::strains()). */
+       * blocks: BlockKinematics::strains()), as of setup_system(). */
+      const std::vector<bool> &
+      straining_blocks() const
+      {
+        return straining;
+      }
+
+      /** Whether each block is reduced now (rigid, affine): not
+       * meshed_blocks(). */
       std::vector<bool>
-      straining_blocks() const;
+      reduced_mesh_blocks() const;
 
       /**
        * After setup_constraints(), on the present geometry: the blocks'
@@ -241,9 +249,14 @@ namespace ndda
       std::vector<bool> cell_auto;
       /// The blocks that move with fewer unknowns than their mesh has.
       kinematics::ReducedBlocks reduced_blocks;
+      /// What the blocks' finite rotation needs of the nodes, made with
+      /// the mass matrix (assemble()).
+      BlockNodes block_nodes;
 
     private:
       SectionTimer &timer;
+      /// straining_blocks(), made by setup_system().
+      std::vector<bool> straining;
     };
   } // namespace scene
 } // namespace ndda
