@@ -447,8 +447,10 @@ namespace ndda
         frames->to_frame(prescribed_in_frame);
       }
     const Vector<double> &g = in_frame ? prescribed_in_frame : prescribed;
-    const bool            with_g =
-      constraints.exact() && !constraints.constrained_nodes().empty();
+    // (A fixed support prescribes zeros: nothing to take.)
+    const bool with_g = constraints.exact() &&
+                        !constraints.constrained_nodes().empty() &&
+                        !g.all_zero();
     Vector<double> ag;
     if (with_g)
       {
