@@ -21,30 +21,6 @@ namespace ndda
 {
   namespace contact
   {
-    namespace
-    {
-      /**
-       * Where the entries of every vertex (of @p n_vertices) begin in
-       * @p list, sorted by the vertex @p vertex_of gives an entry:
-       * @p start[v] to @p start[v + 1].
-       */
-      template <typename List, typename VertexOf>
-      void
-      index_by_vertex(const unsigned int         n_vertices,
-                      const List                &list,
-                      const VertexOf            &vertex_of,
-                      std::vector<unsigned int> &start)
-      {
-        start.assign(n_vertices + 1, 0);
-        for (const auto &entry : list)
-          ++start[vertex_of(entry) + 1];
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          start[v + 1] += start[v];
-      }
-    } // namespace
-
-
-
     void
     ContactHandler::initialize(const std::vector<BoundaryEdge> &edges_in,
                                const std::vector<double>       &friction_in,

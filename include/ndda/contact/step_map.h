@@ -2,6 +2,8 @@
 #ifndef ndda_contact_step_map_h
 #define ndda_contact_step_map_h
 
+#include <deal.II/base/exceptions.h>
+
 #include <algorithm>
 #include <iterator>
 #include <tuple>
@@ -18,6 +20,31 @@ namespace ndda
      * an invalid index (a vertex-vertex pair).
      */
     using ContactKey = std::tuple<unsigned int, unsigned int, unsigned int>;
+
+    /**
+     * Where the entries of every vertex (of @p n_vertices) begin in
+     * @p list, sorted by the vertex @p vertex_of gives an entry: they are
+     * @p start[v] to @p start[v + 1], found without a search.
+     */
+    template <typename List, typename VertexOf>
+    void
+    index_by_vertex(const unsigned int         n_vertices,
+                    const List                &list,
+                    const VertexOf            &vertex_of,
+                    std::vector<unsigned int> &start)
+    {
+      Assert(std::is_sorted(list.begin(),
+                            list.end(),
+                            [&](const auto &a, const auto &b) {
+                              return vertex_of(a) < vertex_of(b);
+                            }),
+             dealii::ExcMessage("index_by_vertex(): the list is not sorted."));
+      start.assign(n_vertices + 1, 0);
+      for (const auto &entry : list)
+        ++start[vertex_of(entry) + 1];
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        start[v + 1] += start[v];
+    }
 
     /**
      * What one step of ContactHandler leaves for the next, looked up by
@@ -59,13 +86,11 @@ namespace ndda
           if (std::next(e) == entries.end() || std::next(e)->first != e->first)
             *last++ = *e;
         entries.erase(last, entries.end());
-        const unsigned int n =
-          entries.empty() ? 0 : std::get<0>(entries.back().first) + 1;
-        start.assign(n + 1, 0);
-        for (const auto &e : entries)
-          ++start[std::get<0>(e.first) + 1];
-        for (unsigned int v = 0; v < n; ++v)
-          start[v + 1] += start[v];
+        index_by_vertex(
+          entries.empty() ? 0 : std::get<0>(entries.back().first) + 1,
+          entries,
+          [](const auto &e) { return std::get<0>(e.first); },
+          start);
       }
 
       /** The value under @p k, or null. */

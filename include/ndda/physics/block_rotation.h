@@ -78,8 +78,9 @@ namespace ndda
    * rotation small, and a correction would move its constrained nodes off
    * their prescribed values.
    *
-   * @p rotation is block_rotations() of @p d if the caller has it, else
-   * empty. Returns the rotation theta of every block (0 for those left).
+   * @p solved_rotation is block_rotations() of @p d if the caller has
+   * it, else empty. Returns the rotation theta of every block (0 for those
+   * left).
    *
    * @ingroup physics
    */
@@ -89,7 +90,7 @@ namespace ndda
                 const ElementCache<2>     &element_cache,
                 const StressField         &stresses,
                 const BlockNodes          &nodes,
-                const std::vector<double> &rotation,
+                const std::vector<double> &solved_rotation,
                 const double               dt,
                 Vector<double>            &d,
                 Vector<double>            &velocity,
