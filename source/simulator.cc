@@ -204,7 +204,7 @@ namespace ndda
 
     // Right-hand side at the end of the step (thesis 3.15):
     // f_ext(t1) - f_int + inertia terms of the integrator.
-    Vector<double> rhs;
+    Vector<double> &rhs = step_rhs;
     {
       SectionTimer::Scope scope(timer, "solve");
       assemble_external_force(time + dt, step_external_force);
@@ -215,7 +215,8 @@ namespace ndda
                                    dt,
                                    rhs);
     }
-    Vector<double> prescribed(fem.dof_handler.n_dofs());
+    Vector<double> &prescribed = step_prescribed;
+    prescribed.reinit(fem.dof_handler.n_dofs());
     fem.constraints.prescribed_increment(time, dt, displacement, prescribed);
     if (!fem.constraints.exact())
       fem.constraints.add_penalty_forces(fem.penalty_stiffness,
@@ -325,7 +326,8 @@ namespace ndda
     // Each block's rotation made exact: its linearised rotation in d is
     // replaced by the finite one, and its velocity and acceleration turn
     // with it.
-    Vector<double>            motion(d);
+    Vector<double> &motion = step_motion;
+    motion                 = d;
     const std::vector<double> rotation =
       rotate_blocks(mesh,
                     fem.dof_map,

@@ -15,13 +15,22 @@
 //  - LinearSystem and OpenCloseSolver (no contacts: one solve): for the
 //    step matrix K + M / dt^2 and the right-hand side M t / dt^2 of a rigid
 //    translation t, the solve gives t back (K t = 0), and the mass solve
-//    M a = M g gives a = g.
+//    M a = M g gives a = g;
+//  - LinearSolver's GMRES with an earlier factorization (UMFPACK and KLU):
+//    on a matrix that differs from the factorized one by a change of rank
+//    3 and of rank 8 (past the fifth iteration's orthogonality check), the
+//    same iterations and the same iterate, to the last bit, as deal.II's
+//    SolverGMRES with right preconditioning; a change of every row that
+//    would take more iterations than it may is refused (0).
 
 #include <deal.II/grid/grid_generator.h>
+
+#include <deal.II/lac/solver_gmres.h>
 
 #include <ndda/contact/open_close_solver.h>
 #include <ndda/physics/constitutive_law.h>
 #include <ndda/physics/finite_element.h>
+#include <ndda/physics/linear_solver.h>
 #include <ndda/physics/linear_system.h>
 #include <ndda/physics/stress_field.h>
 
@@ -409,6 +418,91 @@ namespace
     std::cout << element_name << ": rigid translation and mass solve exact, "
               << system.n_factorizations() << " factorization" << std::endl;
   }
+
+  /** A factorization as deal.II preconditioner. */
+  struct Factorization
+  {
+    LinearSolver *solver;
+
+    void
+    vmult(Vector<double> &dst, const Vector<double> &src) const
+    {
+      solver->solve(dst, src);
+    }
+  };
+
+  void
+  check_reused_factorization(const parameters::LinearSolverType type,
+                             const std::string                 &name)
+  {
+    // A banded non-symmetric matrix with a few far couplings.
+    const unsigned int     n = 60;
+    DynamicSparsityPattern dsp(n);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        for (unsigned int j = (i < 2 ? 0 : i - 2); j < std::min(n, i + 3); ++j)
+          dsp.add(i, j);
+        dsp.add(i, (7 * i) % n);
+      }
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> a0(pattern), a1(pattern);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        a0.add(i, (7 * i) % n, 0.3);
+        for (unsigned int j = (i < 2 ? 0 : i - 2); j < std::min(n, i + 3); ++j)
+          a0.add(i, j, i == j ? 6. + 0.01 * i : (j < i ? -1. : -0.7));
+      }
+    LinearSolver solver(type, 1e-12);
+    solver.factorize(a0);
+    Vector<double> b(n);
+    for (unsigned int i = 0; i < n; ++i)
+      b[i] = std::sin(i + 1.);
+
+    std::cout << name << ": GMRES with an earlier factorization,";
+    for (const unsigned int rank : {3u, 8u, n})
+      {
+        a1.copy_from(a0);
+        for (unsigned int r = 0; r < rank; ++r)
+          {
+            const unsigned int row = (r * 37 + 5) % n;
+            a1.add(row, row, 2. + r);
+            a1.add(row, (7 * row) % n, 0.5);
+          }
+        // Up to 20 iterations; for the change of every row, as many as a
+        // factorization costs (a few).
+        const unsigned int min_iterations = rank == n ? 2 : 20;
+        Vector<double>     x;
+        const unsigned int iterations = solver.solve_with_earlier_factorization(
+          a1, x, b, min_iterations, 1e-12);
+        if (rank == n)
+          {
+            check(iterations == 0, name + ": a change of every row refused");
+            std::cout << " a change of every row refused" << std::endl;
+            continue;
+          }
+        const unsigned int          limit = solver.reuse_limit(min_iterations);
+        SolverControl               control(limit, 1e-12 * b.l2_norm());
+        SolverGMRES<Vector<double>> gmres(
+          control,
+          SolverGMRES<Vector<double>>::AdditionalData(limit + 2, true));
+        Vector<double> y(n);
+        gmres.solve(a1, y, b, Factorization{&solver});
+        check(iterations == control.last_step(),
+              name + ": GMRES takes SolverGMRES's iterations");
+        bool same = true;
+        for (unsigned int i = 0; i < n; ++i)
+          same = same && x[i] == y[i];
+        check(same, name + ": GMRES gives SolverGMRES's iterate to the bit");
+        Vector<double> residual(n);
+        a1.vmult(residual, x);
+        residual -= b;
+        check(residual.l2_norm() <= 1e-12 * b.l2_norm(),
+              name + ": GMRES converged");
+        std::cout << " rank " << rank << " change: " << iterations
+                  << " iterations as SolverGMRES, same iterate;";
+      }
+  }
 } // namespace
 
 int
@@ -436,5 +530,7 @@ main(int argc, char **argv)
       check_point_tangents(element);
       check_solves(element);
     }
+  check_reused_factorization(parameters::LinearSolverType::umfpack, "UMFPACK");
+  check_reused_factorization(parameters::LinearSolverType::klu, "KLU");
   return 0;
 }

@@ -480,6 +480,10 @@ namespace ndda
     /// External force at the present time, and at the end of the step
     /// being solved (for the work of the loads).
     Vector<double> external_force, step_external_force;
+    /// Scratch of a step, kept so that a step allocates nothing: the
+    /// right-hand side and the prescribed increments of try_time_step(),
+    /// the increment with exact rotations of commit_step().
+    Vector<double> step_rhs, step_prescribed, step_motion;
     double         load_work              = 0;
     double         initial_kinetic_energy = 0;
 

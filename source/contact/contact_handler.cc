@@ -449,7 +449,7 @@ namespace ndda
       first_step                  = false;
       // The forces the integrator applied over the step: at its end (DDA)
       // or the mean of start and end (Newmark).
-      dealii::Vector<double> applied(d.size());
+      applied.reinit(d.size());
       if (settings.average_start_and_end)
         {
           start_forces(applied);

@@ -28,7 +28,7 @@ namespace ndda
         contacts != nullptr ? settings.max_one_way_iterations : 1;
       for (unsigned int iteration = 0;; ++iteration)
         {
-          Vector<double> b(rhs);
+          b = rhs;
           // Newmark averages the forces at the step's start and end. A
           // contact that opens in this step would keep half of its start
           // force for the whole step and hand the body the energy
@@ -45,7 +45,7 @@ namespace ndda
           solver_iterations =
             system.solve(with_springs ? springs :
                                         LinearSystem::SpringAssembler(),
-                         std::move(b),
+                         b,
                          prescribed,
                          constraints,
                          contacts != nullptr ? settings.reuse_iterations : 0,

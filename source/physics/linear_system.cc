@@ -281,13 +281,14 @@ namespace ndda
         d.reinit(b.size());
         return 1;
       }
-    Vector<double> bc(free_dofs.size()), dc(free_dofs.size());
+    compact_b.reinit(free_dofs.size(), true);
+    compact_d.reinit(free_dofs.size());
     for (unsigned int r = 0; r < free_dofs.size(); ++r)
-      bc[r] = b[free_dofs[r]];
-    const unsigned int iterations = run(bc, dc);
+      compact_b[r] = b[free_dofs[r]];
+    const unsigned int iterations = run(compact_b, compact_d);
     d.reinit(b.size());
     for (unsigned int r = 0; r < free_dofs.size(); ++r)
-      d[free_dofs[r]] = dc[r];
+      d[free_dofs[r]] = compact_d[r];
     return iterations;
   }
 
@@ -426,7 +427,7 @@ namespace ndda
 
   unsigned int
   LinearSystem::solve(const SpringAssembler &add_springs,
-                      Vector<double>         b,
+                      Vector<double>        &b,
                       const Vector<double>  &prescribed,
                       const Constraints     &constraints,
                       const unsigned int     reuse_iterations,
@@ -440,7 +441,6 @@ namespace ndda
     const auto &affine   = constraints.affine_constraints();
     // The prescribed increments g (exact constraints) in the frames, and
     // A g with the springs S g, to take from b.
-    Vector<double> prescribed_in_frame;
     if (in_frame)
       {
         prescribed_in_frame = prescribed;
@@ -451,7 +451,6 @@ namespace ndda
     const bool with_g = constraints.exact() &&
                         !constraints.constrained_nodes().empty() &&
                         !g.all_zero();
-    Vector<double> ag;
     if (with_g)
       {
         ag.reinit(b.size());

@@ -38,6 +38,18 @@ namespace ndda
 
 
 
+  bool
+  StressField::moves_in(const unsigned int c, const Vector<double> &d) const
+  {
+    const auto *dofs = dof_map->dofs_of_cell(c);
+    for (unsigned int i = 0; i < dof_map->dofs_per_cell; ++i)
+      if (d[dofs[i]] != 0.)
+        return true;
+    return false;
+  }
+
+
+
   std::pair<double, double>
   StressField::cell_rotation(const unsigned int    c,
                              const Vector<double> &d) const
@@ -48,15 +60,18 @@ namespace ndda
     const Tensor<2, 2> F         = deformation_gradient(c);
     const Tensor<2, 2> F_inverse = invert(F);
     const double       J         = determinant(F);
+    const bool         moves     = moves_in(c, d);
     double             rotation = 0, area = 0;
     for (unsigned int q = 0; q < element_cache->n_quadrature_points(); ++q)
       {
+        area += J * data.weight[q];
+        if (!moves)
+          continue;
         Tensor<2, 2> gradient;
         for (unsigned int i = 0; i < n_dofs; ++i)
           gradient += d[dofs[i]] * data.gradient[q * n_dofs + i];
         const Tensor<2, 2> G = gradient * F_inverse;
         rotation += 0.5 * (G[1][0] - G[0][1]) * J * data.weight[q];
-        area += J * data.weight[q];
       }
     return {rotation, area};
   }
@@ -72,7 +87,10 @@ namespace ndda
     // computed on; F maps it to the step's start geometry x, so the
     // increment's gradient there is (dd/dX) F^-1. Its polar split turns
     // the stress exactly and strains the cell by its stretch only: rigid
-    // motion of any size leaves the stress as it was, turned.
+    // motion of any size leaves the stress as it was, turned. A cell
+    // that does not move keeps its stresses (the law is not asked).
+    if (!moves_in(c, d))
+      return;
     const unsigned int n_dofs    = dof_map->dofs_per_cell;
     const auto        &data      = (*element_cache)[c];
     const auto        *dofs      = dof_map->dofs_of_cell(c);

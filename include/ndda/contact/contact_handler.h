@@ -758,6 +758,8 @@ namespace ndda
       bool one_way = true;
       /// Forces of all springs at the end of the last accepted step.
       dealii::Vector<double> end_force;
+      /// Scratch of end_step(): the forces applied over the step.
+      dealii::Vector<double> applied;
     };
   } // namespace contact
 } // namespace ndda

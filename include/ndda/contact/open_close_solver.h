@@ -74,6 +74,8 @@ namespace ndda
     private:
       Settings     settings;
       unsigned int solver_iterations = 0;
+      /// An iteration's right-hand side (kept: a step allocates nothing).
+      Vector<double> b;
     };
   } // namespace contact
 } // namespace ndda

@@ -21,7 +21,10 @@ namespace ndda
    * incrementally: at the end of a step, every quadrature point's stress
    * is its start stress (turned with the cell's spin, see doc/theory.md)
    * updated by update_stress() with the strain increment of the step's
-   * displacement increment d.
+   * displacement increment d. A cell that d does not move at all (every
+   * node's increment exactly zero, as in a fixed block) keeps its
+   * stresses: update_stress() is not called for it, so a law must leave a
+   * stress unchanged by a zero increment (as rate-independent laws do).
    *
    * The element stiffness is t int B^T C B (thesis 3.24) with C the
    * tangent at each quadrature point. A law whose tangent does not depend

@@ -143,7 +143,8 @@ namespace ndda
      * A changed system is first solved by GMRES with the last
      * factorization, with up to @p reuse_iterations iterations or as many
      * as a factorization costs where that is more
-     * (LinearSolver::reuse_limit(); 0: never).
+     * (LinearSolver::reuse_limit(); 0: never). @p b is used as scratch:
+     * on return it holds no particular value.
      * Returns the iterations of the solve: GMRES's with the earlier
      * factorization, else the linear solver's (1 for a direct solver).
      *
@@ -156,7 +157,7 @@ namespace ndda
      */
     unsigned int
     solve(const SpringAssembler &add_springs,
-          Vector<double>         b,
+          Vector<double>        &b,
           const Vector<double>  &prescribed,
           const Constraints     &constraints,
           const unsigned int     reuse_iterations,
@@ -360,6 +361,10 @@ namespace ndda
     /// The fewest GMRES iterations of a solve with the present
     /// factorization.
     unsigned int reuse_fewest = numbers::invalid_unsigned_int;
+    /// Scratch of solve() and compact_solve(), kept from step to step so
+    /// that a step allocates nothing: the prescribed increments in the
+    /// frames, A g, and the compact right-hand side and solution.
+    Vector<double> prescribed_in_frame, ag, compact_b, compact_d;
   };
 } // namespace ndda
 

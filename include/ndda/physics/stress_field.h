@@ -87,7 +87,8 @@ namespace ndda
      * increment @p d from the present geometry: on entry the start
      * stresses. At each point the step's deformation gradient
      * F = I + dd/dx = V R is split; the stress is turned by R (exactly),
-     * then updated by the constitutive law with the strain V - I.
+     * then updated by the constitutive law with the strain V - I. A cell
+     * that @p d does not move at all keeps @p sigma as it is.
      */
     void
     advance(const unsigned int    cell,
@@ -143,6 +144,10 @@ namespace ndda
     cell_rotation(const unsigned int cell, const Vector<double> &d) const;
 
   private:
+    /** Whether the increment @p d moves any node of cell @p c. */
+    bool
+    moves_in(const unsigned int c, const Vector<double> &d) const;
+
     /** The deformation gradient of cell @p cell since its element data
      * were computed (ElementCache::deformation_gradient()). */
     Tensor<2, 2>
