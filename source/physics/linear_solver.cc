@@ -387,12 +387,17 @@ namespace ndda
             SolverControl              &control,
             const unsigned int          basis_size)
       {
+        // The basis vectors are sized when an iteration first needs them
+        // (empty vectors hold no memory): a large system that converges in
+        // a few iterations does not hold a hundred of its vectors.
         const unsigned int n_tmp = std::max(basis_size, 3u);
-        if (basis.size() < n_tmp)
-          basis.resize(n_tmp);
-        for (unsigned int i = 0; i < n_tmp; ++i)
-          if (basis[i].size() != x.size())
-            basis[i].reinit(x.size());
+        if (basis.size() < n_tmp - 1)
+          basis.resize(n_tmp - 1);
+        const auto sized = [&](Vector<double> &vector) -> Vector<double> & {
+          if (vector.size() != x.size())
+            vector.reinit(x.size());
+          return vector;
+        };
         H.resize(n_tmp * (n_tmp - 1));
         gamma.assign(n_tmp, 0.);
         ci.resize(n_tmp - 1);
@@ -403,8 +408,8 @@ namespace ndda
           return H[i * (n_tmp - 1) + j];
         };
 
-        Vector<double> &v = basis[0];
-        Vector<double> &p = basis[n_tmp - 1];
+        Vector<double> &v = sized(basis[0]);
+        sized(p);
         A.vmult(v, x);
         v.sadd(-1., 1., b);
         double       rho   = v.l2_norm();
@@ -419,7 +424,7 @@ namespace ndda
                  inner < n_tmp - 2 && state == SolverControl::iterate;
                  ++inner)
               {
-                Vector<double> &vv = basis[inner + 1];
+                Vector<double> &vv = sized(basis[inner + 1]);
                 preconditioner.vmult(p, basis[inner]);
                 A.vmult(vv, p);
                 dim            = inner + 1;
@@ -516,8 +521,9 @@ namespace ndda
         gamma[col] *= ci[col];
       }
 
-      /// The Krylov basis (its last vector is the work vector p).
+      /// The Krylov basis, and the work vector p = P^-1 v.
       std::vector<Vector<double>> basis;
+      Vector<double>              p;
       /// The rotated Hessenberg matrix by rows, its present column, the
       /// rotated right-hand side, the rotations and the coefficients.
       std::vector<double> H, h, gamma, ci, si, y;
