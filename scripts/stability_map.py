@@ -8,7 +8,8 @@ script runs ndda over
   300, 1000, plus the scene's own factor where it lies inside that range;
 - 'Control/Time step': the scene's own x 0.1, 0.3, 1, 3, 10;
 - 'Contact/Vertex-vertex method': revised, shortest path;
-- 'Control/Time integrator': DDA, Newmark;
+- 'Control/Time integrator': DDA, Newmark (--integrators names others,
+  e.g. generalized-alpha with its default spectral radius);
 
 with a shortened 'End time' per scene (SCENES below says which and why),
 and classifies each run by ndda's own checks, the first that applies:
@@ -893,6 +894,12 @@ def main():
         help="wall seconds a run may take; a run stopped then is classified "
         "from the statistics it wrote, else 'timed out' (default 30)",
     )
+    parser.add_argument(
+        "--integrators",
+        default=",".join(INTEGRATORS),
+        help="comma-separated values of Control/Time integrator, one row of "
+        "panels each (default: %(default)s)",
+    )
     parser.add_argument("--keep", action="store_true", help="keep the runs' output folders")
     parser.add_argument(
         "--from-csv",
@@ -901,6 +908,8 @@ def main():
         "markdown from the rows of an earlier runs.csv",
     )
     args = parser.parse_args()
+    global INTEGRATORS
+    INTEGRATORS = tuple(i.strip() for i in args.integrators.split(",") if i.strip())
 
     ndda = os.path.abspath(args.ndda)
     if not os.access(ndda, os.X_OK):
