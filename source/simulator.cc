@@ -119,6 +119,8 @@ namespace ndda
     displacement.reinit(n);
     kinematics.velocity.reinit(n);
     kinematics.inertia_force.reinit(n);
+    if (parameters.control.time_integrator->keeps_acceleration())
+      kinematics.acceleration.reinit(n);
     internal_force.reinit(n);
   }
 
@@ -338,7 +340,10 @@ namespace ndda
                     dt,
                     motion,
                     kinematics.velocity,
-                    kinematics.inertia_force);
+                    kinematics.inertia_force,
+                    kinematics.acceleration.size() > 0 ?
+                      &kinematics.acceleration :
+                      nullptr);
     // The blocks' frames turn with them: their matrices stay.
     fem.frames.turn(rotation);
     // A rigid block in the global frame that turned needs new lines.
@@ -406,6 +411,7 @@ namespace ndda
       fem.linear_system.lumped_acceleration(kinematics.inertia_force);
     const Vector<double>          old_displacement(displacement);
     const Vector<double>          old_velocity(kinematics.velocity);
+    const Vector<double>          old_acceleration(kinematics.acceleration);
     const std::vector<double>     bolt_forces = fem.bolts.axial_forces();
     const contact::ContactHandler old_contacts(contacts);
 
@@ -424,6 +430,8 @@ namespace ndda
     };
     transfer(old_displacement, displacement);
     transfer(old_velocity, kinematics.velocity);
+    if (old_acceleration.size() > 0)
+      transfer(old_acceleration, kinematics.acceleration);
     Vector<double> new_acceleration;
     transfer(acceleration, new_acceleration);
     // Constraints, bolts, loads and measure points are found by position
@@ -493,9 +501,15 @@ namespace ndda
     // velocity is fitted, keeping momentum and angular momentum.
     fem.reduced_blocks.project(fem.linear_system.get_mass_matrix(),
                                kinematics.velocity);
-    if (parameters.control.time_integrator->needs_initial_acceleration())
+    const auto &integrator = *parameters.control.time_integrator;
+    if (integrator.needs_initial_acceleration())
       kinematics.inertia_force =
-        fem.initial_inertia_force(time, displacement, internal_force);
+        fem.initial_inertia_force(time,
+                                  displacement,
+                                  internal_force,
+                                  integrator.keeps_acceleration() ?
+                                    &kinematics.acceleration :
+                                    nullptr);
     if (measure_points.waiting_for_first_sample())
       measure_points.record(time, displacement, kinematics.velocity, stresses);
     assemble_external_force(time, external_force);

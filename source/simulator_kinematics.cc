@@ -100,6 +100,11 @@ namespace ndda
                                kinematics.velocity,
                                &kinematics.inertia_force,
                                demoted);
+    if (kinematics.acceleration.size() > 0)
+      fem.reduced_blocks.project(fem.linear_system.get_mass_matrix(),
+                                 kinematics.acceleration,
+                                 nullptr,
+                                 demoted);
   }
 
 

@@ -9,6 +9,10 @@
 //  - a harmonic oscillator over ten periods: Newmark keeps the energy to
 //    round-off and its period error is the known (omega dt)^2 / 12; DDA
 //    loses energy (numerical damping);
+//  - generalized-α on the oscillator: rho_inf = 1 is Newmark step by step;
+//    an unresolved mode (omega dt = 1e4) is scaled by rho_inf per step;
+//    the error of a resolved one falls as dt^2; its energy is kept to
+//    within the scheme's small damping;
 //  - the registry: names, an unknown name, a scheme registered by this
 //    program, subsection Control read from a .prm text;
 //  - the step controller: attempt sizes, cuts, growth after a cut, the end
@@ -16,9 +20,11 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <ndda/time/dda.h>
+#include <ndda/time/generalized_alpha.h>
 #include <ndda/time/newmark.h>
 #include <ndda/time/step_controller.h>
 #include <ndda/time/time_integrator.h>
@@ -111,7 +117,7 @@ namespace
           const auto integrator =
             create_time_integrator(TimeIntegratorRegistry::create(scheme),
                                    analysis);
-          KinematicState state{one(3.), one(-4.)};
+          KinematicState state{one(3.), one(-4.), {}};
           Vector<double> rhs(1);
           integrator->add_inertia_terms(mass.matrix, state, dt, rhs);
           const double c = integrator->mass_coefficient(dt);
@@ -181,7 +187,7 @@ namespace
           create_time_integrator(TimeIntegratorRegistry::create(scheme),
                                  AnalysisType::dynamic_analysis);
         double         x = 1;
-        KinematicState state{one(0.), one(-k * x)};
+        KinematicState state{one(0.), one(-k * x), {}};
         const unsigned n_steps    = 500;
         double         x_previous = x, t_last_crossing = 0;
         for (unsigned int n = 1; n <= n_steps; ++n)
@@ -223,20 +229,147 @@ namespace
       }
   }
 
+  /** The oscillator m = 1, k = omega^2 from x0 = 1, v0 = 0 (a0 = -k)
+   * over @p n_steps steps of @p dt with @p integrator: x and v at the end,
+   * and x after every step in @p history if given. */
+  std::pair<double, double>
+  oscillate(const TimeIntegrator &integrator,
+            const double          omega,
+            const double          dt,
+            const unsigned int    n_steps,
+            std::vector<double>  *history = nullptr)
+  {
+    const double   k = omega * omega;
+    const Scalar   mass(1.);
+    double         x = 1;
+    KinematicState state{one(0.), one(-k * x), {}};
+    if (integrator.keeps_acceleration())
+      state.acceleration = one(-k * x);
+    for (unsigned int n = 1; n <= n_steps; ++n)
+      {
+        Vector<double> rhs(1);
+        rhs[0] = -k * x;
+        integrator.add_inertia_terms(mass.matrix, state, dt, rhs);
+        const double d = rhs[0] / (k + integrator.mass_coefficient(dt));
+        integrator.update(one(d), dt, mass.matrix, one(0.), state);
+        x += d;
+        if (history != nullptr)
+          history->push_back(x);
+      }
+    return {x, state.velocity[0]};
+  }
+
+
+
+  void
+  test_generalized_alpha()
+  {
+    std::cout << "Generalized-alpha on the oscillator" << std::endl;
+    const double w = 2 * M_PI, dt = 0.02;
+    // rho_inf = 1 against Newmark, step by step over ten periods.
+    {
+      GeneralizedAlpha alpha;
+      alpha.set_spectral_radius(1.);
+      const auto          newmark = TimeIntegratorRegistry::create("Newmark");
+      std::vector<double> xa, xn;
+      const auto          end_a   = oscillate(alpha, w, dt, 500, &xa);
+      const auto          end_n   = oscillate(*newmark, w, dt, 500, &xn);
+      double              largest = 0;
+      for (unsigned int n = 0; n < xa.size(); ++n)
+        largest = std::max(largest, std::abs(xa[n] - xn[n]));
+      std::cout << "  rho_inf = 1 against Newmark, 500 steps: x within "
+                   "1e-12 at every step, v within 1e-10 at the end"
+                << std::endl;
+      check(largest < 1e-12 && std::abs(end_a.second - end_n.second) < 1e-10,
+            "generalized-alpha with rho_inf = 1 is Newmark");
+    }
+    // An unresolved mode (omega dt = 1e6): the spectral radius of the
+    // step's amplification matrix, which maps (x, v, a) at the start to
+    // (x, v, a) at the end (r = -k x), against rho_inf.
+    for (const double rho : {0., 0.5, 0.8, 1.})
+      {
+        GeneralizedAlpha alpha;
+        alpha.set_spectral_radius(rho);
+        const double             omega = 1e6 / dt, k = omega * omega;
+        const Scalar             mass(1.);
+        LAPACKFullMatrix<double> amplification(3, 3);
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            const double   x = j == 0 ? 1. : 0.;
+            KinematicState state{one(j == 1 ? 1. : 0.),
+                                 one(-k * x),
+                                 one(j == 2 ? 1. : 0.)};
+            Vector<double> rhs(1);
+            rhs[0] = -k * x;
+            alpha.add_inertia_terms(mass.matrix, state, dt, rhs);
+            const double d = rhs[0] / (k + alpha.mass_coefficient(dt));
+            alpha.update(one(d), dt, mass.matrix, one(0.), state);
+            amplification(0, j) = x + d;
+            amplification(1, j) = state.velocity[0];
+            amplification(2, j) = state.acceleration[0];
+          }
+        amplification.compute_eigenvalues();
+        double radius = 0;
+        for (unsigned int i = 0; i < 3; ++i)
+          radius = std::max(radius, std::abs(amplification.eigenvalue(i)));
+        std::cout << "  rho_inf = " << rho
+                  << ", omega dt = 1e6: spectral radius " << radius
+                  << std::endl;
+        check(std::abs(radius - rho) < 1e-3,
+              "generalized-alpha scales an unresolved mode by rho_inf");
+      }
+    // A resolved mode (50 steps a period): second order, and little
+    // damping.
+    GeneralizedAlpha alpha;
+    alpha.set_spectral_radius(0.8);
+    double error[2];
+    for (unsigned int i = 0; i < 2; ++i)
+      {
+        const double step = dt / (1 << i);
+        const auto   end  = oscillate(alpha, w, step, 500 << i);
+        error[i]          = std::hypot(end.first - 1., end.second / w);
+        if (i == 0)
+          {
+            const double energy =
+              end.first * end.first + end.second * end.second / (w * w);
+            std::cout << "  rho_inf = 0.8, 50 steps a period, 10 periods: "
+                      << "energy after / before " << std::setprecision(8)
+                      << energy << std::setprecision(6) << std::endl;
+            check(energy < 1. && energy > 0.99,
+                  "generalized-alpha keeps a resolved mode's energy to 1 %");
+          }
+      }
+    std::cout << "  error after 10 periods, dt = 0.02 and 0.01: " << error[0]
+              << ", " << error[1] << " (ratio " << error[0] / error[1] << ")"
+              << std::endl;
+    check(error[0] / error[1] > 3.8 && error[0] / error[1] < 4.2,
+          "generalized-alpha is second order");
+    const std::string bad = message_of([]() {
+      GeneralizedAlpha alpha;
+      alpha.set_spectral_radius(1.5);
+    });
+    std::cout << "  rho_inf = 1.5: " << bad << std::endl;
+    check(bad.find("Spectral radius at infinity: 1.5") != std::string::npos,
+          "message for a spectral radius beyond 1");
+  }
+
+
+
   void
   test_registry()
   {
     std::cout << "Registry" << std::endl;
     std::cout << "  names: " << TimeIntegratorRegistry::joined_names()
               << std::endl;
-    check(TimeIntegratorRegistry::joined_names() == "DDA|Newmark|Shi",
+    check(TimeIntegratorRegistry::joined_names() ==
+            "DDA|Newmark|Shi|generalized-alpha",
           "registered names");
     const std::string unknown =
       message_of([]() { TimeIntegratorRegistry::create("Verlet"); });
     std::cout << "  unknown name: " << unknown << std::endl;
     check(unknown.find("Control/Time integrator: 'Verlet' is not a time "
                        "integrator. Known time integrators: DDA, Newmark, "
-                       "Shi.") != std::string::npos,
+                       "Shi, generalized-alpha.") != std::string::npos,
           "message for an unknown scheme");
     const std::string twice = message_of([]() {
       TimeIntegratorRegistry::add("DDA",
@@ -438,6 +571,7 @@ main()
   std::cout << std::setprecision(6);
   test_one_step();
   test_oscillator();
+  test_generalized_alpha();
   test_registry();
   test_step_controller();
   test_step_hold();

@@ -315,6 +315,8 @@ namespace ndda
       // g0 > 0 to g1 < 0 it is the end force times g1 / (g1 - g0), for one
       // that opens from g0 < 0 to g1 > 0 the start force times
       // g0 / (g0 - g1). Without it, every impact would lose kn g0 g1 / 2.
+      // Generalized-α (start forces weighted alpha_f) takes the same
+      // scales: doc/theory.md, "Generalized-α", says why.
       const bool closed_at_start =
         c.start_chosen != invalid &&
         (c.start.state == State::locked || c.start.state == State::sliding);
@@ -399,7 +401,7 @@ namespace ndda
       // The scale depends on the solution it enters: a few
       // iterations make it consistent; after that it is accepted as it
       // is rather than cutting the step.
-      if (settings.average_start_and_end && update_scale(c, d) &&
+      if (settings.start_weight > 0. && update_scale(c, d) &&
           statistics.n_iterations < 4)
         changed = true;
       return changed;
@@ -447,13 +449,14 @@ namespace ndda
       statistics.n_bonded         = 0;
       statistics.bonded_length    = 0;
       first_step                  = false;
-      // The forces the integrator applied over the step: at its end (DDA)
-      // or the mean of start and end (Newmark).
+      // The forces the integrator applied over the step: at its end (DDA),
+      // the mean of start and end (Newmark), or start and end weighted
+      // alpha_f and 1 - alpha_f (generalized-α).
       applied.reinit(d.size());
-      if (settings.average_start_and_end)
+      if (settings.start_weight > 0.)
         {
           start_forces(applied);
-          applied *= 0.5;
+          applied *= settings.start_weight;
         }
       end_force.reinit(d.size());
       for (const ContactPair &c : contacts)
@@ -471,7 +474,7 @@ namespace ndda
         }
       memory.finish();
       open_last_step.finish();
-      applied.add(settings.average_start_and_end ? 0.5 : 1., end_force);
+      applied.add(1. - settings.start_weight, end_force);
       statistics.contact_work += applied * d;
       statistics.dissipation =
         -statistics.contact_work - statistics.spring_energy;

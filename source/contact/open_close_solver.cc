@@ -35,10 +35,11 @@ namespace ndda
           // F0 g1 / 2 (g1 the gap it opens): only contacts closed at both
           // ends enter the average (doc/contact.md).
           inertia_correction.reinit(rhs.size());
-          if (contacts != nullptr && settings.average_contact_forces)
+          if (contacts != nullptr && settings.contact_start_weight > 0.)
             {
               contacts->newmark_correction(inertia_correction);
-              b += inertia_correction;
+              const double w = settings.contact_start_weight;
+              b.add(w / (1. - w), inertia_correction);
             }
           const bool with_springs =
             contacts != nullptr && contacts->has_springs();

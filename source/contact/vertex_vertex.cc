@@ -159,7 +159,7 @@ namespace ndda
       c.sign  = sign;
       if (c.state == State::open)
         c.chosen = invalid;
-      if (settings.average_start_and_end)
+      if (settings.start_weight > 0.)
         update_scale(c, d);
       return true;
     }

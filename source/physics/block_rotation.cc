@@ -12,6 +12,9 @@ namespace ndda
     {
       /// Sums over the nodes that define the centre, and their weight.
       Tensor<1, 2> position, velocity, acceleration, increment;
+      /// The sum of the acceleration vector (a scheme that keeps one),
+      /// weighted as the velocity.
+      Tensor<1, 2> kept_acceleration;
       double       weight = 0;
       /// Its number of constrained nodes.
       unsigned int constrained = 0;
@@ -211,7 +214,8 @@ namespace ndda
                 const double               dt,
                 Vector<double>            &d,
                 Vector<double>            &velocity,
-                Vector<double>            &inertia_force)
+                Vector<double>            &inertia_force,
+                Vector<double>            *acceleration)
   {
     const unsigned int n_nodes = dof_map.node_dofs.size();
     AssertDimension(nodes.block.size(), n_nodes);
@@ -241,6 +245,10 @@ namespace ndda
                        Tensor<1, 2>(
                          {inertia_force[dofs[0]], inertia_force[dofs[1]]}),
                        Tensor<1, 2>({d[dofs[0]], d[dofs[1]]}));
+        if (acceleration != nullptr)
+          block.kept_acceleration +=
+            (block.constrained > 0 ? 1. : node_mass[n]) *
+            Tensor<1, 2>({(*acceleration)[dofs[0]], (*acceleration)[dofs[1]]});
       }
 
     std::vector<double> rotation =
@@ -291,6 +299,12 @@ namespace ndda
                    node_mass[n] * block.acceleration / block.weight,
                    c,
                    sin);
+        if (acceleration != nullptr)
+          turn_about(*acceleration,
+                     dofs,
+                     block.kept_acceleration / block.weight,
+                     c,
+                     sin);
       }
 
     // The Coriolis term that turning leaves out: the block's spin

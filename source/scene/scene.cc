@@ -232,8 +232,8 @@ namespace ndda
         materials.joint.tensile_strength * materials.thickness;
       settings.bond_cohesion = materials.joint.cohesion * materials.thickness;
       settings.law           = parameters.contact.law;
-      settings.average_start_and_end =
-        parameters.control.time_integrator->averages_contact_forces();
+      settings.start_weight =
+        parameters.control.time_integrator->contact_start_weight();
       contacts.initialize(edges, edge_friction, dofs, settings);
       return distances;
     }
@@ -283,8 +283,8 @@ namespace ndda
       settings.reuse_iterations = parameters.contact.reuse_iterations;
       settings.max_one_way_iterations =
         parameters.contact.max_one_way_iterations;
-      settings.average_contact_forces =
-        parameters.control.time_integrator->averages_contact_forces();
+      settings.contact_start_weight =
+        parameters.control.time_integrator->contact_start_weight();
       return settings;
     }
   } // namespace scene

@@ -28,10 +28,10 @@ namespace ndda
 
 
 
-    bool
-    Newmark::averages_contact_forces() const
+    double
+    Newmark::contact_start_weight() const
     {
-      return true;
+      return 0.5;
     }
 
 

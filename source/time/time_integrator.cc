@@ -15,12 +15,15 @@ namespace ndda
     link_plugin_DDA();
     void
     link_plugin_Newmark();
+    void
+    link_plugin_GeneralizedAlpha();
 
     void
     TimeIntegrator::link_builtin_plugins()
     {
       link_plugin_DDA();
       link_plugin_Newmark();
+      link_plugin_GeneralizedAlpha();
     }
 
 
@@ -45,8 +48,16 @@ namespace ndda
 
 
 
+    double
+    TimeIntegrator::contact_start_weight() const
+    {
+      return 0.;
+    }
+
+
+
     bool
-    TimeIntegrator::averages_contact_forces() const
+    TimeIntegrator::needs_initial_acceleration() const
     {
       return false;
     }
@@ -54,7 +65,7 @@ namespace ndda
 
 
     bool
-    TimeIntegrator::needs_initial_acceleration() const
+    TimeIntegrator::keeps_acceleration() const
     {
       return false;
     }
@@ -97,10 +108,10 @@ namespace ndda
           scheme->add_inertia_terms(mass, start, dt, rhs);
         }
 
-        bool
-        averages_contact_forces() const override
+        double
+        contact_start_weight() const override
         {
-          return scheme->averages_contact_forces();
+          return scheme->contact_start_weight();
         }
 
         void
@@ -113,6 +124,7 @@ namespace ndda
           scheme->update(d, dt, mass, contact_correction, state);
           state.velocity      = 0;
           state.inertia_force = 0;
+          state.acceleration  = 0;
         }
 
       private:

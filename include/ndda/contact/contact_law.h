@@ -71,9 +71,11 @@ namespace ndda
       /// a contact (the far face of a block thinner than the detection
       /// distance, m).
       double ignore_depth = 0;
-      /// The integrator averages start and end forces (Newmark); only used
-      /// for the friction work in the statistics.
-      bool average_start_and_end = false;
+      /// The weight of the contact forces at the step's start in the
+      /// integrator's step (TimeIntegrator::contact_start_weight(): 0 for
+      /// Shi's scheme, 1/2 for Newmark, alpha_f for generalized-α); the
+      /// end forces have 1 minus it.
+      double start_weight = 0;
       /// Joint strength per metre of contact length (N/m): tensile
       /// strength and cohesion of the joint material times the thickness.
       /// Contacts that touch at the start of the run are bonded with it

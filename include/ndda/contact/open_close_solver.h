@@ -33,9 +33,11 @@ namespace ndda
         /// GMRES iterations with the last factorization before a changed
         /// system is factorized (LinearSystem::solve()).
         unsigned int reuse_iterations = 0;
-        /// The integrator averages the forces of the step's start and end
-        /// (Newmark).
-        bool average_contact_forces = false;
+        /// The weight w of the contact forces at the step's start
+        /// (TimeIntegrator::contact_start_weight(); 1/2 for Newmark). With
+        /// w > 0 the start forces are corrected for the contacts that open
+        /// or close within the step, with the weight w / (1 - w).
+        double contact_start_weight = 0;
       };
 
       OpenCloseSolver() = default;

@@ -63,7 +63,8 @@ namespace ndda
    * - @p velocity and @p inertia_force (the integrator's end state, from
    *   the linear d) turn by R(theta) relative to the centre: the block's
    *   motion turns with it (the centripetal acceleration of the rigid
-   *   rotation);
+   *   rotation); so does @p acceleration, the acceleration vector of a
+   *   scheme that keeps one (generalized-α), if given;
    * - @p velocity takes the Coriolis term that the turn leaves out,
    *   -(theta / dt) J R w (@p dt the step), w the deformation in d,
    *   less its part along the radial field r, which would change the
@@ -94,7 +95,8 @@ namespace ndda
                 const double               dt,
                 Vector<double>            &d,
                 Vector<double>            &velocity,
-                Vector<double>            &inertia_force);
+                Vector<double>            &inertia_force,
+                Vector<double>            *acceleration = nullptr);
 
 
   /**

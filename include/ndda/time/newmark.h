@@ -30,8 +30,8 @@ namespace ndda
                         const double                dt,
                         Vector<double>             &rhs) const override;
 
-      bool
-      averages_contact_forces() const override;
+      double
+      contact_start_weight() const override;
 
       bool
       needs_initial_acceleration() const override;

@@ -32,12 +32,18 @@ namespace ndda
      * dof vectors: the velocity v and the inertia force M a (the mass
      * matrix times the acceleration; kept as a force so that contact forces
      * can be taken out of it without a mass solve, and so that it carries
-     * over a crack through the lumped mass).
+     * over a crack through the lumped mass). A scheme whose forces act at
+     * a point inside the step (generalized-α) keeps there the force at the
+     * step's start instead, f_ext - f_int + contact forces, which is M a
+     * wherever the equation of motion holds at the step's ends (Newmark),
+     * and keeps the acceleration itself as a third vector; the others leave
+     * @p acceleration empty.
      */
     struct KinematicState
     {
       Vector<double> velocity;
       Vector<double> inertia_force;
+      Vector<double> acceleration;
     };
 
     /**
@@ -97,18 +103,36 @@ namespace ndda
                         Vector<double>             &rhs) const = 0;
 
       /**
-       * Whether contact forces act as the mean of their values at the
-       * step's start and end (the trapezoidal rule of Newmark's average
-       * acceleration), so that the contacts must correct the inertia force
-       * for contacts that open or close within the step
-       * (contact::ContactHandler::newmark_correction()).
+       * The weight w of the contact forces at the step's start: they act as
+       * w times their start value plus 1 - w times their end value (0: at
+       * the end, Shi's scheme and the default; 1/2: the mean, Newmark's
+       * average acceleration; alpha_f: generalized-α). With w > 0 the
+       * contacts correct the start force for contacts that open or close
+       * within the step (contact::ContactHandler::newmark_correction()),
+       * and that correction enters the right-hand side with the weight
+       * w / (1 - w).
        */
-      virtual bool
-      averages_contact_forces() const;
+      virtual double
+      contact_start_weight() const;
+
+      /** Whether contact_start_weight() is not zero. */
+      bool
+      averages_contact_forces() const
+      {
+        return contact_start_weight() > 0.;
+      }
 
       /** Whether the run starts by solving M a0 = f_ext(0) - f_int. */
       virtual bool
       needs_initial_acceleration() const;
+
+      /**
+       * Whether the scheme keeps the acceleration as a vector of its own
+       * (KinematicState::acceleration): the run then starts it with a0 and
+       * turns, transfers and fits it with the velocity.
+       */
+      virtual bool
+      keeps_acceleration() const;
 
       /**
        * The velocity and inertia force at the end of a step of length
