@@ -6,6 +6,13 @@ namespace ndda
 {
   namespace time
   {
+    GeneralizedAlpha::GeneralizedAlpha()
+    {
+      set_spectral_radius(0.);
+    }
+
+
+
     void
     GeneralizedAlpha::declare_parameters(ParameterHandler &prm)
     {

@@ -36,6 +36,9 @@ namespace ndda
     class GeneralizedAlpha : public TimeIntegrator
     {
     public:
+      /** The scheme at the entry's default, rho = 0. */
+      GeneralizedAlpha();
+
       static void
       declare_parameters(ParameterHandler &prm);
 
@@ -72,7 +75,7 @@ namespace ndda
              KinematicState             &state) const override;
 
     private:
-      double alpha_m = 0.5, alpha_f = 0.5, beta = 0.25, gamma = 0.5;
+      double alpha_m, alpha_f, beta, gamma;
     };
   } // namespace time
 } // namespace ndda
