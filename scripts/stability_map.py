@@ -868,6 +868,7 @@ def write_markdown(path, scenes, rows, grids, args, total_seconds, out_dir):
 
 
 def main():
+    global INTEGRATORS
     parser = argparse.ArgumentParser(
         description="Stability map of ndda's contact over penalty x step size "
         "(see the top of this file)."
@@ -908,7 +909,6 @@ def main():
         "markdown from the rows of an earlier runs.csv",
     )
     args = parser.parse_args()
-    global INTEGRATORS
     INTEGRATORS = tuple(i.strip() for i in args.integrators.split(",") if i.strip())
 
     ndda = os.path.abspath(args.ndda)
