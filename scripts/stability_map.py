@@ -760,8 +760,16 @@ def markdown_scene(scene, rows, penalties, step_factors, png_name):
 
 
 def compare(rows, key, values, others, penalties, step_factors):
-    """Sentences on the runs where two methods (or integrators) differ."""
-    first, second = values
+    """Sentences on the runs where two methods (or integrators) differ: the
+    first value against each other one (none for a single value)."""
+    lines = []
+    for second in values[1:]:
+        lines += compare_pair(rows, key, values[0], second, others, penalties, step_factors)
+    return lines
+
+
+def compare_pair(rows, key, first, second, others, penalties, step_factors):
+    """Sentences on the runs where @p first and @p second differ."""
     index = {}
     for r in rows:
         index[(r[key], tuple(r[o] for o in others), r["penalty_factor"], r["dt_factor"])] = r
