@@ -358,8 +358,13 @@ namespace ndda
 
     fem.bolts.update(displacement, motion);
 
-    // Work of the loads over the step, by the trapezoidal rule.
+    // Work of the loads over the step, by the trapezoidal rule; of the
+    // prescribed motion, as the last solve's reactions did it; and the
+    // viscous dissipation.
     load_work += 0.5 * (external_force * motion + step_external_force * motion);
+    prescribed_work += fem.linear_system.last_constraint_work();
+    if (fem.linear_system.has_damping())
+      add_viscous_work(d, dt);
     external_force = step_external_force;
 
     displacement += motion;
@@ -369,6 +374,31 @@ namespace ndda
     // The internal force of the new stresses on the step's end geometry,
     // and the strain energy they hold.
     compute_internal_force();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_viscous_work(const Vector<double> &d, const double dt)
+  {
+    // Every built-in scheme solves with the viscous force C d / dt, the
+    // step's mean velocity. A scheme that weights the start forces w
+    // (TimeIntegrator::contact_start_weight(); Newmark 1/2) carries the
+    // last step's viscous force in its start force, so the force that does
+    // the work d is C (w v_prev + (1 - w) d / dt), v_prev the last step's
+    // mean velocity (none in the first step: the initial acceleration has
+    // no viscous force). With Newmark the kinetic energy lost is then
+    // exactly this work. C is a multiple of M in each block, the same in
+    // every frame.
+    const SparseMatrix<double> &damping =
+      fem.linear_system.get_damping_matrix();
+    const double w = parameters.control.time_integrator->contact_start_weight();
+    viscous_work += (1. - w) * damping.matrix_norm_square(d) / dt;
+    if (w > 0. && last_mean_velocity.size() == d.size())
+      viscous_work += w * damping.matrix_scalar_product(d, last_mean_velocity);
+    last_mean_velocity = d;
+    last_mean_velocity /= dt;
   }
 
 
@@ -671,8 +701,21 @@ namespace ndda
   {
     const double spring_energy =
       parameters.contact.enabled ? contacts.get_statistics().spring_energy : 0.;
-    return kinetic + strain + spring_energy - load_work -
+    return kinetic + strain + spring_energy - load_work - prescribed_work -
            initial_kinetic_energy;
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::numerical_energy(const double kinetic,
+                                   const double strain) const
+  {
+    const double friction = parameters.contact.enabled ?
+                              contacts.get_statistics().friction_dissipation :
+                              0.;
+    return energy_error(kinetic, strain) + friction + viscous_work;
   }
 
 

@@ -10,7 +10,8 @@
 //    other, which slides on rollers; the bolt stretches by F / k. With
 //    pretension P and no force the gap closes by P / k.
 // 3. Viscosity: a sliding block with viscosity mu and density rho slows
-//    down as v0 exp(-mu t / rho).
+//    down as v0 exp(-mu t / rho); the viscous dissipation is the kinetic
+//    energy it loses, and the energy balance closes to round-off.
 
 #include <cmath>
 
@@ -237,6 +238,23 @@ main(int argc, char **argv)
               << std::setprecision(2) << error << std::endl;
     record("constraints_and_bolts.viscous_error", error, 2);
     check(error < 1e-3, "viscous decay");
+    // The energy balance closes: with Newmark (the default) and C a
+    // multiple of M, the kinetic energy lost in a step is d^T C d / dt
+    // exactly, so the numerical energy is round-off.
+    const double initial = 0.5 * 2000. * 1. * 1.; // 1/2 m v0^2 (J)
+    const double numerical =
+      simulator.numerical_energy(simulator.kinetic_energy(),
+                                 simulator.strain_energy());
+    std::cout << "viscosity: viscous dissipation "
+              << simulator.viscous_dissipation() << " J, numerical energy "
+              << numerical << " J (kinetic " << simulator.kinetic_energy()
+              << " J, strain " << simulator.strain_energy() << " J, gain "
+              << simulator.energy_error() << " J)" << std::endl;
+    check(std::abs(numerical) < 1e-9 * initial,
+          "viscous dissipation closes the energy balance");
+    check(std::abs(simulator.viscous_dissipation() / initial -
+                   (1. - std::exp(-2.))) < 1e-3,
+          "viscous dissipation is the kinetic energy lost");
   }
   std::cout << "OK" << std::endl;
 }

@@ -248,14 +248,52 @@ namespace ndda
     }
 
     /**
+     * Work done by prescribed motion since the start (J): the reactions of
+     * the exact constraints times their prescribed increments, step by
+     * step (LinearSystem::last_constraint_work()). Zero with fixed
+     * supports only; not counted with `Constraint method = penalty`.
+     */
+    double
+    work_of_prescribed_motion() const
+    {
+      return prescribed_work;
+    }
+
+    /** Whether any material of the scene has viscosity. */
+    bool
+    has_viscosity() const
+    {
+      return fem.linear_system.has_damping();
+    }
+
+    /** Energy the materials' viscosity took out since the start (J). */
+    double
+    viscous_dissipation() const
+    {
+      return viscous_work;
+    }
+
+    /**
      * Mechanical energy gained since the start (J): kinetic + strain +
-     * contact spring energy - work of the loads - initial kinetic energy.
-     * Zero for an exact, energy-conserving run without friction; negative
-     * where friction, impacts or the integrator take energy out; positive
-     * only if something creates energy (a test for spurious gain).
+     * contact spring energy - work of the loads - work of prescribed
+     * motion - initial kinetic energy. Zero for an exact,
+     * energy-conserving run without friction; negative where friction,
+     * viscosity, impacts or the integrator take energy out; positive only
+     * if something creates energy (a test for spurious gain).
      */
     double
     energy_error() const;
+
+    /**
+     * The part of energy_error() that no physical term explains (J): the
+     * gain plus what friction (ContactStatistics::friction_dissipation) and
+     * viscosity took out. What the integrator (its damping and its
+     * treatment of contacts that close or open within a step) took, if
+     * negative, or gave, if positive. @p kinetic and @p strain as
+     * kinetic_energy() and strain_energy() return them.
+     */
+    double
+    numerical_energy(const double kinetic, const double strain) const;
 
     /** energy_error() with the kinetic energy and the strain energy given
      * (as kinetic_energy() and strain_energy() return them), for a caller
@@ -368,6 +406,10 @@ namespace ndda
     void
     build_element_matrices(const bool only_moved_cells,
                            const bool always = false);
+    /** Add the viscous dissipation of the step with increment @p d. */
+    void
+    add_viscous_work(const Vector<double> &d, const double dt);
+
     /** Internal force and strain energy of the present stresses. */
     void
     compute_internal_force();
@@ -484,7 +526,11 @@ namespace ndda
     /// right-hand side and the prescribed increments of try_time_step(),
     /// the increment with exact rotations of commit_step().
     Vector<double> step_rhs, step_prescribed, step_motion;
-    double         load_work              = 0;
+    double         load_work       = 0;
+    double         prescribed_work = 0;
+    double         viscous_work    = 0;
+    /// The last step's increment over its size, for add_viscous_work().
+    Vector<double> last_mean_velocity;
     double         initial_kinetic_energy = 0;
 
     StressField stresses;

@@ -62,6 +62,17 @@ namespace ndda
 
 
 
+    double
+    ContactLaw::friction_dissipation(const Option &,
+                                     const ContactState &,
+                                     const Trial &,
+                                     const ContactSettings &) const
+    {
+      return 0.;
+    }
+
+
+
     void
     register_contact_law(const std::string &name,
                          const std::string &description,

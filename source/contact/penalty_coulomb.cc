@@ -152,6 +152,28 @@ namespace ndda
 
 
 
+    double
+    PenaltyCoulomb::friction_dissipation(const Option          &o,
+                                         const ContactState    &contact,
+                                         const Trial           &trial,
+                                         const ContactSettings &settings) const
+    {
+      if (contact.state != State::sliding || contact.sign == 0 ||
+          contact.friction <= 0.)
+        return 0.;
+      // The friction force -sign mu N e_t acts with the weights of the
+      // integrator's contact forces: the start gap's normal force weighted
+      // start_weight, the end gap's the rest. It does the work
+      // -sign mu N (e_t . d); its negative is what friction takes out.
+      const double w = settings.start_weight;
+      const double normal_force =
+        settings.normal_stiffness *
+        (w * std::max(-o.gap, 0.) + (1. - w) * std::max(-trial.gap, 0.));
+      return contact.sign * contact.friction * normal_force * trial.increment;
+    }
+
+
+
     // Bonded joints.
 
     bool

@@ -451,6 +451,8 @@ namespace ndda
     const bool with_g = constraints.exact() &&
                         !constraints.constrained_nodes().empty() &&
                         !g.all_zero();
+    constraint_work = 0;
+    g_blocks.clear();
     if (with_g)
       {
         ag.reinit(b.size());
@@ -525,6 +527,8 @@ namespace ndda
                 condensed_matrix.add(
                   dofs[i], dofs.size(), dofs.data(), &(*k)(i, 0), false, false);
             if (touches_g)
+              g_blocks.push_back(key);
+            if (touches_g)
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 for (unsigned int j = 0; j < dofs.size(); ++j)
                   ag[dofs[i]] += (*k)(i, j) * g[dofs[j]];
@@ -547,7 +551,10 @@ namespace ndda
     // homogeneous lines (of the exact constraints, and of the reduced
     // blocks with either method).
     if (with_g)
-      b -= ag;
+      {
+        b_with_g = b;
+        b -= ag;
+      }
     affine.condense(b);
     const unsigned int iterations =
       changed ? solve_changed(b, d, springs, reuse_iterations) :
@@ -555,9 +562,38 @@ namespace ndda
     affine.distribute(d);
     if (constraints.exact())
       d += g;
+    if (with_g)
+      constraint_work = prescribed_work(g, d);
     if (in_frame)
       frames->to_global(d);
     return iterations;
+  }
+
+
+
+  double
+  LinearSystem::prescribed_work(const Vector<double> &g,
+                                const Vector<double> &d)
+  {
+    // The reactions A d - b on the rows that g moves (everything here in
+    // the frames of the solve): the system matrix's rows, and the rows of
+    // the contact springs on those dofs, which solve() kept.
+    Vector<double> &reaction = ag;
+    system_matrix.vmult(reaction, d);
+    reaction -= b_with_g;
+    for (const unsigned int key : g_blocks)
+      {
+        const KeptBlock &kept = kept_blocks[key];
+        for (unsigned int i = 0; i < kept.dofs.size(); ++i)
+          if (g[kept.dofs[i]] != 0.)
+            for (unsigned int j = 0; j < kept.dofs.size(); ++j)
+              reaction[kept.dofs[i]] += kept.k(i, j) * d[kept.dofs[j]];
+      }
+    double work = 0;
+    for (unsigned int i = 0; i < g.size(); ++i)
+      if (g[i] != 0.)
+        work += g[i] * reaction[i];
+    return work;
   }
 
 

@@ -48,8 +48,18 @@ namespace ndda
                        "Work of loads (J)",
                        simulator.work_of_loads());
         add_scientific(statistics,
+                       "Work of prescribed motion (J)",
+                       simulator.work_of_prescribed_motion());
+        add_scientific(statistics,
                        "Energy gain (J)",
                        simulator.energy_error(kinetic, strain));
+        if (simulator.has_viscosity())
+          add_scientific(statistics,
+                         "Viscous dissipation (J)",
+                         simulator.viscous_dissipation());
+        add_scientific(statistics,
+                       "Numerical energy (J)",
+                       simulator.numerical_energy(kinetic, strain));
       }
     };
 
@@ -107,6 +117,9 @@ namespace ndda
         add_scientific(statistics, "Contact energy (J)", c.spring_energy);
         add_scientific(statistics, "Contact dissipation (J)", c.dissipation);
         add_scientific(statistics,
+                       "Friction dissipation (J)",
+                       c.friction_dissipation);
+        add_scientific(statistics,
                        "Normal stiffness (N/m)",
                        contacts.get_settings().normal_stiffness);
       }
@@ -146,8 +159,15 @@ namespace ndda
       EnergyStatistics,
       "energy",
       "Statistics columns 'Kinetic energy (J)', 'Strain energy (J)', 'Work "
-      "of loads (J)' and 'Energy gain (J)' (kinetic + strain + contact "
-      "spring energy - work of the loads - initial kinetic energy).")
+      "of loads (J)', 'Work of prescribed motion (J)' (the reactions of "
+      "moving supports times their motion; not counted with the penalty "
+      "constraint method), 'Energy gain (J)' (kinetic + strain + contact "
+      "spring energy - work of the loads - work of prescribed motion - "
+      "initial kinetic energy), with viscous materials 'Viscous dissipation "
+      "(J)', and 'Numerical energy (J)': the gain plus the friction and "
+      "viscous dissipation, the energy the integrator gave (positive) or "
+      "took (negative), contact switching included (doc/theory.md, "
+      "'Energy balance').")
     NDDA_REGISTER_PLUGIN(
       Postprocessor,
       FractureStatistics,
@@ -164,6 +184,8 @@ namespace ndda
       "'Closed contacts', "
       "'Sliding contacts', 'Vertex springs', 'Bonded contacts', 'Max "
       "penetration (m)', 'Contact energy (J)', 'Contact dissipation (J)' "
+      "(taken out by the contacts so far: friction and the integrator's "
+      "contact switching), 'Friction dissipation (J)' (its friction part) "
       "and 'Normal stiffness (N/m)'.")
     NDDA_REGISTER_PLUGIN(
       Postprocessor,

@@ -355,6 +355,20 @@ namespace ndda
              const Trial           &trial,
              const ContactSettings &settings) const = 0;
 
+      /**
+       * The energy (J) that friction dissipated in a contact that ends the
+       * step sliding (state @p contact.state) on option @p o with the
+       * solution @p trial: the friction force the integrator applied over
+       * the step times the slip, for the statistics' energy balance
+       * ('Friction dissipation (J)'). The default: none (a law without
+       * friction).
+       */
+      virtual double
+      friction_dissipation(const Option          &o,
+                           const ContactState    &contact,
+                           const Trial           &trial,
+                           const ContactSettings &settings) const;
+
       /** For messages (PluginRegistry). */
       static const char *
       plugin_kind()

@@ -32,6 +32,11 @@ namespace ndda
       /// -contact_work - spring_energy, i.e. friction and the losses of
       /// penalty springs that close within a step.
       double dissipation = 0;
+      /// The part of the dissipation that friction took out so far (J): the
+      /// friction force of each sliding contact times its slip, step by
+      /// step (ContactLaw::friction_dissipation()). The rest of the
+      /// dissipation is what the integrator's contact switching took.
+      double friction_dissipation = 0;
     };
   } // namespace contact
 } // namespace ndda

@@ -97,6 +97,14 @@ namespace ndda
              const ContactState    &contact,
              const Trial           &trial,
              const ContactSettings &settings) const override;
+
+      /** mu times the normal force, weighted over the step as the
+       * integrator applies it, times the slip |e_t . d|. */
+      double
+      friction_dissipation(const Option          &o,
+                           const ContactState    &contact,
+                           const Trial           &trial,
+                           const ContactSettings &settings) const override;
     };
   } // namespace contact
 } // namespace ndda

@@ -209,6 +209,13 @@ namespace ndda
     Vector<double>
     lumped_inertia_force(const Vector<double> &a) const;
 
+    /** The viscous damping matrix C (kg/s), valid if has_damping(). */
+    const SparseMatrix<double> &
+    get_damping_matrix() const
+    {
+      return damping_matrix;
+    }
+
     /** Whether any material has viscous damping. */
     bool
     has_damping() const
@@ -220,6 +227,20 @@ namespace ndda
     n_factorizations() const
     {
       return linear_solver->n_factorizations();
+    }
+
+    /**
+     * The work (J) that the prescribed increments g of the exact
+     * constraints did in the last solve(): g . (A d - b) over the dofs
+     * where g is not zero, A d - b being the reactions there (the
+     * integrator's balance of the step, contact springs included). Zero
+     * when nothing moves a constraint (fixed supports) and with the
+     * penalty method.
+     */
+    double
+    last_constraint_work() const
+    {
+      return constraint_work;
     }
 
   private:
@@ -288,6 +309,11 @@ namespace ndda
       FullMatrix<double>                   k;
     };
     std::vector<KeptBlock> kept_blocks;
+    /// The keys of the kept blocks on dofs that g moves, in this solve.
+    std::vector<unsigned int> g_blocks;
+    /// last_constraint_work(), and the right-hand side it needs.
+    double         constraint_work = 0;
+    Vector<double> b_with_g;
     /// The plans by the callers' numbers; cleared with the compact pattern.
     std::vector<CompactPlan> compact_plans;
     /// Buffers of add_to_compact().
@@ -321,6 +347,12 @@ namespace ndda
     add_to_compact(const unsigned int                              key,
                    const ArrayView<const types::global_dof_index> &dofs,
                    const FullMatrix<double>                       *k);
+
+    /** The work g . (A d - b) of last_constraint_work(), after a solve
+     * with the prescribed increments @p g and the solution @p d (both in
+     * the solve's frames); uses the right-hand side kept in b_with_g. */
+    double
+    prescribed_work(const Vector<double> &g, const Vector<double> &d);
 
     /** Solve the changed condensed system for @p b into @p d: GMRES with
      * the last factorization, or a new factorization (of a system with
