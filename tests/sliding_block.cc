@@ -37,10 +37,7 @@ namespace
   std::string
   at(const double s, const double h)
   {
-    std::ostringstream out;
-    out << std::setprecision(17) << s * std::cos(slope) - h * std::sin(slope)
-        << ", " << s * std::sin(slope) + h * std::cos(slope);
-    return out.str();
+    return point_on_slope(slope, s, h);
   }
 
   const std::string scene = R"(

@@ -44,6 +44,27 @@ namespace ndda_tests
     return text;
   }
 
+  /** @p x with 17 significant digits, for a .prm entry. */
+  inline std::string
+  exact_number(const double x)
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << x;
+    return out.str();
+  }
+
+  /**
+   * The point "x, y" at distance @p s along a slope that rises at
+   * @p angle (radians) from the origin and @p h above it (normal to it),
+   * with 17 digits, for a .prm entry.
+   */
+  inline std::string
+  point_on_slope(const double angle, const double s, const double h)
+  {
+    return exact_number(s * std::cos(angle) - h * std::sin(angle)) + ", " +
+           exact_number(s * std::sin(angle) + h * std::cos(angle));
+  }
+
   /**
    * @p text with every run of white space (deal.II's line breaks and
    * indentation in exception messages) folded into one space, and none at
