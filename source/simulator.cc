@@ -199,7 +199,8 @@ namespace ndda
   {
     const auto &integrator = *parameters.control.time_integrator;
     fem.linear_system.prepare_step(dt,
-                                   integrator.mass_coefficient(dt),
+                                   integrator.step_mass_coefficient(dt,
+                                                                    kinematics),
                                    integrator.damping_coefficient(dt),
                                    fem.constraints,
                                    fem.penalty_stiffness);
@@ -499,12 +500,10 @@ namespace ndda
     const auto &integrator = *parameters.control.time_integrator;
     if (integrator.needs_initial_acceleration())
       kinematics.inertia_force =
-        fem.initial_inertia_force(time,
-                                  displacement,
-                                  internal_force,
-                                  integrator.keeps_acceleration() ?
-                                    &kinematics.acceleration :
-                                    nullptr);
+        fem.initial_inertia_force(time, displacement, internal_force);
+    // A scheme that keeps the acceleration finds its own with the first
+    // step (KinematicState::starting).
+    kinematics.starting = integrator.keeps_acceleration();
     if (measure_points.waiting_for_first_sample())
       measure_points.record(time, displacement, kinematics.velocity, stresses);
     assemble_external_force(time, external_force);

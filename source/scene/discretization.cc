@@ -326,8 +326,7 @@ namespace ndda
     Discretization::initial_inertia_force(
       const double          t,
       const Vector<double> &displacement,
-      const Vector<double> &internal_force,
-      Vector<double>       *acceleration_out) const
+      const Vector<double> &internal_force) const
     {
       Vector<double> rhs;
       external_force(t, displacement, rhs);
@@ -336,8 +335,6 @@ namespace ndda
       linear_system.solve_mass(rhs, constraints, acceleration);
       Vector<double> inertia_force(acceleration.size());
       linear_system.get_mass_matrix().vmult(inertia_force, acceleration);
-      if (acceleration_out != nullptr)
-        *acceleration_out = acceleration;
       return inertia_force;
     }
   } // namespace scene

@@ -62,6 +62,16 @@ namespace ndda
 
 
 
+    double
+    GeneralizedAlpha::first_step_mass_coefficient(const double dt) const
+    {
+      // With a1 = a0 = 2 (d - dt v0) / dt^2: the same as the others' at
+      // rho = 0 and rho = 1.
+      return 2. / ((1. - alpha_f) * dt * dt);
+    }
+
+
+
     void
     GeneralizedAlpha::add_inertia_terms(const SparseMatrix<double> &mass,
                                         const KinematicState       &start,
@@ -70,9 +80,11 @@ namespace ndda
     {
       // (alpha_f r0 + M ((1 - alpha_m) / (beta dt) v0
       //  + ((1 - alpha_m) (1/2 - beta) / beta - alpha_m) a0)) / (1 - alpha_f)
+      // The first step: M a0 = (1 - alpha_f) r1 + alpha_f r0 with
+      // a0 = 2 (d - dt v0) / dt^2 gives the velocity term 2 M v0 / dt.
       Vector<double> mv(start.velocity);
-      mv *= (1. - alpha_m) / (beta * dt);
-      if (start.acceleration.size() == mv.size())
+      mv *= start.starting ? 2. / dt : (1. - alpha_m) / (beta * dt);
+      if (start.acceleration.size() == mv.size() && !start.starting)
         mv.add((1. - alpha_m) * (0.5 - beta) / beta - alpha_m,
                start.acceleration);
       mv /= 1. - alpha_f;
@@ -116,6 +128,15 @@ namespace ndda
       Vector<double> &a0 = state.acceleration;
       if (a0.size() != d.size())
         a0.reinit(d.size());
+      // The first step's acceleration is constant over the step; a1 below
+      // comes out equal to it.
+      if (state.starting)
+        {
+          a0 = d;
+          a0.add(-dt, state.velocity);
+          a0 *= 2. / (dt * dt);
+          state.starting = false;
+        }
       // a1 = (d - dt v0 - dt^2 (1/2 - beta) a0) / (beta dt^2)
       Vector<double> a1(d);
       a1.add(-dt, state.velocity, -dt * dt * (0.5 - beta), a0);

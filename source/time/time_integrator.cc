@@ -49,6 +49,14 @@ namespace ndda
 
 
     double
+    TimeIntegrator::first_step_mass_coefficient(const double dt) const
+    {
+      return mass_coefficient(dt);
+    }
+
+
+
+    double
     TimeIntegrator::contact_start_weight() const
     {
       return 0.;
@@ -91,6 +99,12 @@ namespace ndda
         mass_coefficient(const double dt) const override
         {
           return scheme->mass_coefficient(dt);
+        }
+
+        double
+        first_step_mass_coefficient(const double dt) const override
+        {
+          return scheme->first_step_mass_coefficient(dt);
         }
 
         double

@@ -212,14 +212,12 @@ namespace ndda
       /**
        * The inertia force M a0 at the start of a run, for an integrator
        * that needs the initial acceleration: M a0 = f_ext(t) - f_int, with
-       * zero acceleration at constrained dofs. The acceleration itself goes
-       * to @p acceleration if it is given.
+       * zero acceleration at constrained dofs.
        */
       Vector<double>
       initial_inertia_force(const double          t,
                             const Vector<double> &displacement,
-                            const Vector<double> &internal_force,
-                            Vector<double>       *acceleration = nullptr) const;
+                            const Vector<double> &internal_force) const;
 
       CrackableMesh                 &mesh;
       std::unique_ptr<FESystem<2>>   fe;

@@ -31,6 +31,17 @@ namespace ndda
      * ((1 - alpha_f) beta dt^2). KinematicState::inertia_force holds r0,
      * KinematicState::acceleration a0 (doc/theory.md, "Generalized-α").
      *
+     * The acceleration a0 is not a(t0): with these parameters it is the
+     * acceleration at t0 + (alpha_m - alpha_f) dt, a step before t0 at
+     * rho = 0. Started with a(t0) under a sudden load, the step gives the
+     * modes it does not resolve a velocity of about (a(t0) / 4) dt, an
+     * energy of (omega dt)^2 / 16 times the static strain energy (25 times
+     * at omega dt = 20). So the first step (KinematicState::starting) takes
+     * the acceleration constant over the step instead, a1 = a0 =
+     * 2 (d - dt v0) / dt^2, with M a0 = (1 - alpha_f) r1 + alpha_f r0.
+     * That step loses energy, k d^2 (1/2 - alpha_f) for a spring k, gains
+     * none at any rho, and keeps second order (doc/theory.md, "Start-up").
+     *
      * @ingroup time
      */
     class GeneralizedAlpha : public TimeIntegrator
@@ -51,6 +62,9 @@ namespace ndda
 
       double
       mass_coefficient(const double dt) const override;
+
+      double
+      first_step_mass_coefficient(const double dt) const override;
 
       void
       add_inertia_terms(const SparseMatrix<double> &mass,

@@ -44,6 +44,11 @@ namespace ndda
       Vector<double> velocity;
       Vector<double> inertia_force;
       Vector<double> acceleration;
+      /// True before a run's first step when the scheme keeps the
+      /// acceleration: it has no acceleration of its own yet, and finds one
+      /// with the first step (generalized-α takes it constant over that
+      /// step, GeneralizedAlpha). update() sets it to false.
+      bool starting = false;
     };
 
     /**
@@ -88,6 +93,21 @@ namespace ndda
       mass_coefficient(const double dt) const = 0;
 
       /**
+       * c_M of a run's first step, taken when KinematicState::starting is
+       * set (step_mass_coefficient()). The default is mass_coefficient().
+       */
+      virtual double
+      first_step_mass_coefficient(const double dt) const;
+
+      /** c_M of a step of length @p dt from the state @p start. */
+      double
+      step_mass_coefficient(const double dt, const KinematicState &start) const
+      {
+        return start.starting ? first_step_mass_coefficient(dt) :
+                                mass_coefficient(dt);
+      }
+
+      /**
        * c_C: the damping (viscosity) matrix's factor in the step's matrix
        * (1/s). The default 1/dt makes the viscous force C d / dt that of
        * the step's mean velocity.
@@ -128,8 +148,10 @@ namespace ndda
 
       /**
        * Whether the scheme keeps the acceleration as a vector of its own
-       * (KinematicState::acceleration): the run then starts it with a0 and
-       * turns, transfers and fits it with the velocity.
+       * (KinematicState::acceleration): the run starts with
+       * KinematicState::starting set, the scheme finding its acceleration
+       * with the first step, and turns, transfers and fits it with the
+       * velocity.
        */
       virtual bool
       keeps_acceleration() const;
