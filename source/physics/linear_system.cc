@@ -552,7 +552,10 @@ namespace ndda
     // blocks with either method).
     if (with_g)
       {
-        b_with_g = b;
+        g_rows.clear();
+        for (unsigned int i = 0; i < g.size(); ++i)
+          if (g[i] != 0.)
+            g_rows.emplace_back(i, b[i]);
         b -= ag;
       }
     affine.condense(b);
@@ -578,21 +581,24 @@ namespace ndda
     // The reactions A d - b on the rows that g moves (everything here in
     // the frames of the solve): the system matrix's rows, and the rows of
     // the contact springs on those dofs, which solve() kept.
-    Vector<double> &reaction = ag;
-    system_matrix.vmult(reaction, d);
-    reaction -= b_with_g;
+    double work = 0;
+    for (const auto &[row, b_row] : g_rows)
+      {
+        double reaction = -b_row;
+        for (auto entry = system_matrix.begin(row);
+             entry != system_matrix.end(row);
+             ++entry)
+          reaction += entry->value() * d[entry->column()];
+        work += g[row] * reaction;
+      }
     for (const unsigned int key : g_blocks)
       {
         const KeptBlock &kept = kept_blocks[key];
         for (unsigned int i = 0; i < kept.dofs.size(); ++i)
           if (g[kept.dofs[i]] != 0.)
             for (unsigned int j = 0; j < kept.dofs.size(); ++j)
-              reaction[kept.dofs[i]] += kept.k(i, j) * d[kept.dofs[j]];
+              work += g[kept.dofs[i]] * kept.k(i, j) * d[kept.dofs[j]];
       }
-    double work = 0;
-    for (unsigned int i = 0; i < g.size(); ++i)
-      if (g[i] != 0.)
-        work += g[i] * reaction[i];
     return work;
   }
 

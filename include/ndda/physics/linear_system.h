@@ -311,9 +311,10 @@ namespace ndda
     std::vector<KeptBlock> kept_blocks;
     /// The keys of the kept blocks on dofs that g moves, in this solve.
     std::vector<unsigned int> g_blocks;
-    /// last_constraint_work(), and the right-hand side it needs.
-    double         constraint_work = 0;
-    Vector<double> b_with_g;
+    /// last_constraint_work(), and what it needs of the right-hand side:
+    /// the rows that g moves, with their entries of b before the lifting.
+    double                                                  constraint_work = 0;
+    std::vector<std::pair<types::global_dof_index, double>> g_rows;
     /// The plans by the callers' numbers; cleared with the compact pattern.
     std::vector<CompactPlan> compact_plans;
     /// Buffers of add_to_compact().
@@ -350,7 +351,8 @@ namespace ndda
 
     /** The work g . (A d - b) of last_constraint_work(), after a solve
      * with the prescribed increments @p g and the solution @p d (both in
-     * the solve's frames); uses the right-hand side kept in b_with_g. */
+     * the solve's frames), on the rows kept in g_rows: a product with
+     * those rows of the matrix only. */
     double
     prescribed_work(const Vector<double> &g, const Vector<double> &d);
 
