@@ -16,11 +16,12 @@ the front and time against meshed, everything from this run's data).
   particle velocity pulse at x = 0.25 and 0.5 m against the bar speed
   sqrt(E / rho), and the peak particle velocity at 0.5 and 0.97 m against
   d'Alembert's solution. Sweep: mesh size x time step x element degree x
-  integrator.
+  integrator (DDA, Newmark, generalized-alpha at its default rho_inf = 0).
 - sliding_block (tests/sliding_block.cc): a block on a 30 degree incline,
   friction angle 20 degrees; its centre's slide along the slope at t = 1 s
   against g (sin a - cos a tan phi) t^2 / 2. Sweep: time step x penalty
-  factor x integrator.
+  factor x integrator (DDA on six steps, Newmark and generalized-alpha on
+  three).
 - brazilian_disc (tests/brazilian_disc.cc): the disc between two plates
   with fracture switched off, to 1.5 ms (before the first crack at about
   2.1 ms); the centre's sigma_xx against 2 P / (pi D t), P the top
@@ -118,6 +119,12 @@ BAR_TARGETS = dict(speed_error=0.01, peak_error=0.03)
 # front point by at least this fraction (smaller gains are noise).
 FRONT_GAIN = 0.05
 
+# Short labels of the integrators in plots and run names.
+INTEGRATOR_LABELS = collections.OrderedDict(
+    [("DDA", "DDA"), ("Newmark", "NM"), ("generalized-alpha", "GA")]
+)
+
+
 # Settings of a run: (key, column name in the CSV and tables).
 SETTING_NAMES = collections.OrderedDict(
     [
@@ -142,13 +149,14 @@ def bar_runs(quick):
             (0.012, 2e-6, 1, "Newmark"),
             (0.012, 2e-6, 1, "DDA"),
             (0.012, 4e-6, 2, "Newmark"),
+            (0.012, 2e-6, 1, "generalized-alpha"),
         ]
     else:
         combos = itertools.product(
             (0.012, 0.008, 0.005, 0.0035),
             (4e-6, 2e-6, 1e-6, 5e-7),
             (1, 2),
-            ("DDA", "Newmark"),
+            ("DDA", "Newmark", "generalized-alpha"),
         )
     return [
         dict(mesh_size=h, time_step=dt, degree=p, integrator=i)
@@ -171,7 +179,8 @@ def sliding_runs(quick):
     # Below the sweep's smallest step: where the error goes as dt -> 0.
     runs += [dict(time_step=5e-5, penalty=100, integrator="DDA")]
     runs += [
-        dict(time_step=dt, penalty=k, integrator="Newmark")
+        dict(time_step=dt, penalty=k, integrator=i)
+        for i in ("Newmark", "generalized-alpha")
         for dt in (1e-4, 5e-4, 2e-3)
         for k in (10, 100, 1000)
     ]
@@ -862,7 +871,7 @@ def short_label(settings):
         elif key == "degree":
             parts.append(f"P{value}")
         elif key == "integrator":
-            parts.append("NM" if value == "Newmark" else "DDA")
+            parts.append(INTEGRATOR_LABELS.get(value, value))
         elif key == "penalty":
             parts.append(f"k{value:g}")
     return " ".join(parts)
@@ -1520,7 +1529,7 @@ def case_remarks(case_name, ok):
             )
         else:
             lines.append(f"No run meets the test's targets ({targets}).")
-        for integrator in ("DDA", "Newmark"):
+        for integrator in INTEGRATOR_LABELS:
             runs = [r for r in ok if r["settings"]["integrator"] == integrator]
             if runs:
                 lines.append(
@@ -1595,6 +1604,13 @@ def case_remarks(case_name, ok):
                 f"Newmark: slide errors from {percent(min(r['error'] for r in newmark))} to "
                 f"{percent(max(r['error'] for r in newmark))} (the contact chatter of "
                 "doc/contact.md, \"Known limits\")."
+            )
+        alpha = [r for r in ok if r["settings"]["integrator"] == "generalized-alpha"]
+        if alpha:
+            lines.append(
+                f"Generalized-α (ρ∞ = 0): slide errors from "
+                f"{percent(min(r['error'] for r in alpha))} to "
+                f"{percent(max(r['error'] for r in alpha))}."
             )
         lines.append("")
     elif case_name == "brazilian_disc":

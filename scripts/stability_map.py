@@ -8,8 +8,8 @@ script runs ndda over
   300, 1000, plus the scene's own factor where it lies inside that range;
 - 'Control/Time step': the scene's own x 0.1, 0.3, 1, 3, 10;
 - 'Contact/Vertex-vertex method': revised, shortest path;
-- 'Control/Time integrator': DDA, Newmark (--integrators names others,
-  e.g. generalized-alpha with its default spectral radius);
+- 'Control/Time integrator': DDA, Newmark and generalized-alpha at its
+  default spectral radius (--integrators names others or fewer);
 
 with a shortened 'End time' per scene (SCENES below says which and why),
 and classifies each run by ndda's own checks, the first that applies:
@@ -80,7 +80,7 @@ import ndda_output  # noqa: E402
 PENALTIES = (10.0, 30.0, 100.0, 300.0, 1000.0)
 STEP_FACTORS = (0.1, 0.3, 1.0, 3.0, 10.0)
 METHODS = ("revised", "shortest path")
-INTEGRATORS = ("DDA", "Newmark")
+INTEGRATORS = ("DDA", "Newmark", "generalized-alpha")
 
 QUICK_SCENE = "vertex_vertex_2"
 QUICK_PENALTIES = (10.0, 1000.0)

@@ -11,7 +11,9 @@
 #   tests and the Brazilian disc's centre stress against 2P/(pi D t)
 #   (scripts/plot_load_curves.py);
 # - when their scripts exist: the speed-accuracy charts
-#   (scripts/speed_accuracy.py, doc/speed_accuracy/) and the stability maps
+#   (scripts/speed_accuracy.py, doc/speed_accuracy/), the integrators'
+#   charts of the brick wall and the Brazilian disc
+#   (scripts/integrator_charts.py, doc/integrators/) and the stability maps
 #   (scripts/stability_map.py, doc/stability/).
 # Runs go to build/validation/ (beside NDDA_BINARY); PYTHON must have numpy
 # and matplotlib (Debian's /usr/bin/python3 with python3-numpy,
@@ -253,6 +255,11 @@ if [ -f "$here/scripts/speed_accuracy.py" ]; then
   "$py" "$here/scripts/speed_accuracy.py" --ndda "$ndda" --prm-dir "$here/prm" \
     --out-dir "$here/doc/speed_accuracy" \
     --markdown "$here/doc/speed_accuracy/speed_accuracy.md"
+fi
+if [ -f "$here/scripts/integrator_charts.py" ]; then
+  "$py" "$here/scripts/integrator_charts.py" --ndda "$ndda" --prm-dir "$here/prm" \
+    --out-dir "$here/doc/integrators" \
+    --markdown "$here/doc/integrators/integrators.md"
 fi
 if [ -f "$here/scripts/stability_map.py" ]; then
   "$py" "$here/scripts/stability_map.py" --ndda "$ndda" --prm-dir "$here/prm" \
