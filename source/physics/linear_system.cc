@@ -385,7 +385,11 @@ namespace ndda
                              const Constraints &constraints,
                              const double       penalty_stiffness)
   {
-    if (!matrices_changed && dt == assembled_dt)
+    // The coefficients can change without the step: generalized-alpha's
+    // first step has a mass coefficient of its own.
+    if (!matrices_changed && dt == assembled_dt &&
+        mass_coefficient == assembled_coefficients[0] &&
+        damping_coefficient == assembled_coefficients[1])
       return;
     const auto section = scope(timer, "system matrix");
     system_matrix.copy_from(stiffness_matrix);
@@ -418,9 +422,11 @@ namespace ndda
               target->value() = entry->value();
             }
         }
-    assembled_dt     = dt;
-    matrices_changed = false;
-    base_factorized  = false;
+    assembled_dt              = dt;
+    assembled_coefficients[0] = mass_coefficient;
+    assembled_coefficients[1] = damping_coefficient;
+    matrices_changed          = false;
+    base_factorized           = false;
   }
 
 

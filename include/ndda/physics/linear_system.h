@@ -18,6 +18,7 @@
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/linear_solver.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -381,9 +382,11 @@ namespace ndda
                                                 const unsigned int    gmres_iterations);
     const BlockFrames            *frames = nullptr;
     std::unique_ptr<LinearSolver> linear_solver;
-    bool                          damped           = false;
-    double                        assembled_dt     = -1;
-    bool                          matrices_changed = true;
+    bool                          damped       = false;
+    double                        assembled_dt = -1;
+    /// The mass and damping coefficients of the assembled system matrix.
+    std::array<double, 2> assembled_coefficients = {{-1., -1.}};
+    bool                  matrices_changed       = true;
     /// The factorization is that of the system matrix without contacts.
     bool base_factorized = false;
     /// The last GMRES solve with an earlier factorization converged slowly:
