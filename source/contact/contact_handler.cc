@@ -163,6 +163,7 @@ namespace ndda
       for (ContactPair &c : contacts)
         {
           c.flips                        = 0;
+          c.shear_flips                  = 0;
           c.scale                        = 1;
           static_cast<ContactState &>(c) = c.start;
           c.chosen                       = c.start_chosen;
@@ -391,6 +392,22 @@ namespace ndda
             state = c.state, sign = c.sign;
           else
             ++c.flips;
+        }
+      // The same for the shear state of a closed contact: one whose
+      // shear force sits at the friction limit can change between locked
+      // and sliding, or between the two sliding directions, at every
+      // solve, whatever the step size (a fresh crack face in a dynamic
+      // run). After three such changes in this step it stays locked: its
+      // shear spring holds a force a little beyond the limit rather than
+      // the iteration cycling.
+      else if ((state == State::locked || state == State::sliding) &&
+               (c.state == State::locked || c.state == State::sliding) &&
+               (state != c.state || sign != c.sign))
+        {
+          if (c.shear_flips >= 3)
+            state = State::locked, sign = 0;
+          else
+            ++c.shear_flips;
         }
       bool changed = state != c.state || sign != c.sign;
       if (state == State::locked && c.state != State::locked)

@@ -306,6 +306,9 @@ namespace ndda
         unsigned int start_chosen = invalid;
         /// Changes between open and closed in this step's iteration.
         unsigned int flips = 0;
+        /// Changes of a closed contact between locked and the two sliding
+        /// directions in this step's iteration.
+        unsigned int shear_flips = 0;
         /// The (state, sliding direction) pairs the contact has had in
         /// this step's iteration, one bit each (visit()).
         std::uint16_t visited = 0;
