@@ -116,12 +116,16 @@ namespace ndda
                           "constrained).");
         prm.declare_entry(
           "Time integrator",
-          "Newmark",
+          "generalized-alpha",
           Patterns::Selection(time::TimeIntegratorRegistry::joined_names()),
           time::TimeIntegratorRegistry::documentation(
             "The time integration scheme (a plugin, see "
             "include/ndda/time/time_integrator.h; each reads its own entries "
-            "from the subsection of its name). With Analysis type = static "
+            "from the subsection of its name). The default, generalized-alpha, "
+            "keeps the waves and bounces the step resolves and removes the "
+            "modes it does not (stiff contact springs); DDA damps both, "
+            "Newmark neither (doc/theory.md, 'The default'). With Analysis "
+            "type = static "
             "every step of the scheme starts at rest; quasi-static uses no "
             "scheme. See doc/theory.md. The schemes:"));
         time::TimeIntegratorRegistry::declare_parameters(prm);
