@@ -2,12 +2,14 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <ndda/base/utilities.h>
 #include <ndda/mesh/state_transfer.h>
 #include <ndda/scene/scene.h>
 #include <ndda/simulator.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 namespace ndda
 {
@@ -82,6 +84,7 @@ namespace ndda
                          scene::material_strengths(parameters.materials),
                          fem.meshed_cells());
     fem.setup_loads(parameters);
+    fem.check_expressions(parameters);
     measure_points.setup(
       mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, false);
 
@@ -226,14 +229,39 @@ namespace ndda
                                          prescribed,
                                          rhs);
 
+    if (!std::isfinite(rhs.l1_norm()))
+      {
+        require_finite(step_external_force,
+                       dt,
+                       "the external force",
+                       "A load's value is not finite.");
+        require_finite(internal_force,
+                       dt,
+                       "the internal force",
+                       "A stress is not finite.");
+        require_finite(rhs,
+                       dt,
+                       "the inertia force",
+                       "A velocity or acceleration is not finite.");
+      }
     const auto solve = [&]() {
-      return open_close.solve(fem.linear_system,
-                              parameters.contact.enabled ? &contacts : nullptr,
-                              rhs,
-                              prescribed,
-                              fem.constraints,
-                              d,
-                              inertia_correction);
+      const bool settled =
+        open_close.solve(fem.linear_system,
+                         parameters.contact.enabled ? &contacts : nullptr,
+                         rhs,
+                         prescribed,
+                         fem.constraints,
+                         d,
+                         inertia_correction);
+      require_finite(
+        d,
+        dt,
+        "the displacement increment solved for",
+        "The right-hand side was finite, so the system is singular: in a "
+        "static or quasi-static scene a block with no constraint and no "
+        "closed contact, or a block held by a single point, can move "
+        "freely; or the step's matrix holds a value that is not finite.");
+      return settled;
     };
     if (!solve())
       return time::AttemptResult::not_settled;
@@ -272,6 +300,56 @@ namespace ndda
           }
       }
     return check_increment(d);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::require_finite(const Vector<double> &v,
+                                 const double          dt,
+                                 const std::string    &quantity,
+                                 const std::string    &hint) const
+  {
+    if (std::isfinite(v.l1_norm()))
+      return;
+    unsigned int bad = 0;
+    while (bad < v.size() && std::isfinite(v[bad]))
+      ++bad;
+    std::ostringstream message;
+    message << "Step " << step_number + 1 << " at t = " << time
+            << " s (dt = " << dt << " s): " << quantity << " is not finite";
+    if (bad < v.size())
+      {
+        const unsigned int node = fem.dof_map.dof_to_node[bad];
+        message << " (" << (std::isnan(v[bad]) ? "nan" : "inf") << " in the "
+                << (fem.dof_map.node_dofs[node][0] == bad ? "x" : "y")
+                << " component";
+        // The node: a vertex of the mesh where it is one, and its block.
+        const auto  &vertex_dofs = fem.dof_map.vertex_dofs;
+        unsigned int vertex      = numbers::invalid_unsigned_int;
+        for (unsigned int i = 0; i < vertex_dofs.size(); ++i)
+          if (vertex_dofs[i][0] == bad || vertex_dofs[i][1] == bad)
+            vertex = i;
+        if (vertex != numbers::invalid_unsigned_int)
+          message << " at the vertex "
+                  << to_string(mesh.get_block_mesh().vertices[vertex]);
+        for (unsigned int c = 0; c < fem.dof_map.n_cells(); ++c)
+          {
+            const auto *dofs = fem.dof_map.dofs_of_cell(c);
+            if (std::find(dofs, dofs + fem.dof_map.dofs_per_cell, bad) !=
+                dofs + fem.dof_map.dofs_per_cell)
+              {
+                message << " of block '"
+                        << mesh.get_block_names()[mesh.block_of_cell(c)] << "'";
+                break;
+              }
+          }
+        message << ")";
+      }
+    message << ". " << hint
+            << " The output up to the last completed step is kept.";
+    AssertThrow(false, ExcMessage(message.str()));
   }
 
 

@@ -35,6 +35,7 @@ using namespace dealii;
 using namespace ndda::fracture;
 using ndda_tests::check;
 using ndda_tests::check_value;
+using ndda_tests::message_of;
 
 /** A criterion defined by this program: never lets an edge fail. */
 class NeverFails : public FractureCriterion
@@ -74,35 +75,6 @@ namespace
     check_value(what + " yy", measured[1][1], expected[1][1], scale);
     check_value(what + " xy", measured[0][1], expected[0][1], scale);
   }
-
-  /**
-   * The message of the exception that @p action throws, with deal.II's
-   * line breaks and indentation folded into single spaces; empty if it
-   * throws none.
-   */
-  template <typename Action>
-  std::string
-  message_of(const Action &action)
-  {
-    std::string message;
-    try
-      {
-        action();
-      }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream out;
-        e.print_info(out);
-        message = out.str();
-      }
-    catch (const std::exception &e)
-      {
-        message = e.what();
-      }
-    return ndda_tests::fold_whitespace(message);
-  }
-
-
 
   SymmetricTensor<2, 2>
   tensor(const double xx, const double yy, const double xy)

@@ -85,6 +85,33 @@ namespace ndda_tests
   }
 
 
+  /**
+   * The message of the exception that @p action throws, with deal.II's
+   * line breaks and indentation folded into single spaces; empty if it
+   * throws none.
+   */
+  template <typename Action>
+  std::string
+  message_of(const Action &action)
+  {
+    std::string message;
+    try
+      {
+        action();
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream out;
+        e.print_info(out);
+        message = out.str();
+      }
+    catch (const std::exception &e)
+      {
+        message = e.what();
+      }
+    return fold_whitespace(message);
+  }
+
   /** Parameters from the text of a .prm file. */
   inline ndda::parameters::Parameters
   read_parameters(const std::string &text, const std::string &name)

@@ -45,6 +45,7 @@
 using namespace dealii;
 using namespace ndda::time;
 using ndda_tests::check;
+using ndda_tests::message_of;
 
 /** A scheme defined by this program: DDA with another name. */
 class Shi : public DDA
@@ -85,22 +86,6 @@ namespace
     Vector<double> v(1);
     v[0] = value;
     return v;
-  }
-
-  std::string
-  message_of(const std::function<void()> &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream out;
-        e.print_info(out);
-        return ndda_tests::fold_whitespace(out.str());
-      }
-    return "";
   }
 
   /**

@@ -444,6 +444,17 @@ namespace ndda
     time::AttemptResult
     check_increment(const Vector<double> &d);
     /**
+     * Throw an ExcMessage if a value of the dof vector @p v is not finite,
+     * naming the step, the time, @p quantity, the first such value's node
+     * and block, and @p hint (the likely causes), so that a run stops
+     * where it goes wrong rather than writing NaN to the end.
+     */
+    void
+    require_finite(const Vector<double> &v,
+                   const double          dt,
+                   const std::string    &quantity,
+                   const std::string    &hint) const;
+    /**
      * Check the fracturable edges against the fracture criterion, from the
      * step's start (the present state) to its trial end (the increment
      * @p d, not committed); a step of length @p dt. Returns the edges that

@@ -29,21 +29,6 @@ namespace ndda
 
 
 
-  std::unique_ptr<dealii::FunctionParser<2>>
-  make_function(const std::string &expression,
-                const unsigned int n_components,
-                const bool         time_dependent)
-  {
-    auto function = std::make_unique<dealii::FunctionParser<2>>(n_components);
-    function->initialize(time_dependent ? "x,y,t" : "x,y",
-                         expression,
-                         {{"pi", dealii::numbers::PI}},
-                         time_dependent);
-    return function;
-  }
-
-
-
   double
   point_tolerance(const dealii::Point<2> &lower, const dealii::Point<2> &upper)
   {

@@ -29,7 +29,8 @@ namespace ndda
              std::vector<std::pair<std::string, std::string>>{
                {"> of file <input string>", ""},
                {"> of file <input string", ":"},
-               {"Line <", "line "}})
+               {"Line <", "line "},
+               {":: ", ": "}})
           for (auto pos = text.find(from); pos != std::string::npos;
                pos      = text.find(from))
             text.replace(pos, from.size(), to);
@@ -176,6 +177,20 @@ namespace ndda
                              " components separated by ';', but " +
                              std::to_string(n_components) +
                              " are needed (variables: " + variables + ")."));
+      // muparser parses a component, and reports its unknown variables,
+      // only when it is evaluated: evaluate each.
+      unsigned int component = 0;
+      const auto   invalid   = [&](const std::string &reason) {
+        AssertThrow(false,
+                    ExcMessage(
+                      entry + ": " +
+                      (n_components > 1 ?
+                             "component " + std::to_string(component + 1) + " ('" +
+                           Utilities::trim(components[component]) + "') of " :
+                             std::string()) +
+                      "'" + expression + "' is not a valid function of (" +
+                      variables + "): " + reason));
+      };
       try
         {
           FunctionParser<2> function(n_components);
@@ -183,22 +198,16 @@ namespace ndda
                               expression,
                               {{"pi", numbers::PI}},
                               variables.find('t') != std::string::npos);
-          // muparser reports unknown variables only on evaluation.
-          function.value(Point<2>(), 0);
+          for (; component < n_components; ++component)
+            function.value(Point<2>(), component);
         }
       catch (const ExceptionBase &exc)
         {
-          AssertThrow(false,
-                      ExcMessage(entry + ": '" + expression +
-                                 "' is not a valid function of (" + variables +
-                                 "): " + message_of(exc)));
+          invalid(message_of(exc));
         }
       catch (const std::exception &exc)
         {
-          AssertThrow(false,
-                      ExcMessage(entry + ": '" + expression +
-                                 "' is not a valid function of (" + variables +
-                                 "): " + exc.what()));
+          invalid(exc.what());
         }
     }
   } // namespace parameters

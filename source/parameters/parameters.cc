@@ -10,7 +10,10 @@
 #include <ndda/physics/constitutive_law.h>
 #include <ndda/physics/finite_element.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -71,10 +74,6 @@ namespace ndda
                       ExcMessage("Loads: '" + name +
                                  "' is both a point load and a line load "
                                  "name. Names must be unique."));
-        AssertThrow(!names.materials.empty(),
-                    ExcMessage("Materials/Names: no material is declared. "
-                               "Give 'set Names = rock' and a subsection "
-                               "'rock' with its properties."));
         return names;
       }
 
@@ -375,6 +374,15 @@ namespace ndda
                                  "section's name list first."));
         }
 
+      // Only now, after the strict pass has reported any unknown entry or
+      // subsection with its line: a misspelled 'Materials' must be blamed
+      // as such, not as a scene without materials.
+      AssertThrow(!names.materials.empty(),
+                  ExcMessage("Materials/Names: no material is declared in '" +
+                             filename +
+                             "'. Give 'set Names = rock' and a subsection "
+                             "'rock' with its properties."));
+
       scene_name        = scene_name_of(prm, filename);
       const auto  slash = filename.find_last_of('/');
       std::string base_directory =
@@ -429,12 +437,24 @@ namespace ndda
     void
     Parameters::read_file(const std::string &filename, ParameterHandler &prm)
     {
+      std::error_code error;
+      AssertThrow(std::filesystem::exists(filename, error),
+                  ExcMessage("The parameter file '" + filename +
+                             "' does not exist. Check the path."));
+      AssertThrow(!std::filesystem::is_directory(filename, error),
+                  ExcMessage("'" + filename +
+                             "' is a directory, not a parameter file. Give "
+                             "the path of a .prm file."));
       std::ifstream in(filename);
       AssertThrow(in.good(),
-                  ExcMessage("Cannot open the parameter file '" + filename +
-                             "'. Check the path."));
+                  ExcMessage("Cannot read the parameter file '" + filename +
+                             "' (" + std::strerror(errno) +
+                             "). Check its permissions."));
       std::stringstream buffer;
       buffer << in.rdbuf();
+      AssertThrow(!in.bad(),
+                  ExcMessage("Cannot read the parameter file '" + filename +
+                             "' (" + std::strerror(errno) + ")."));
       read(buffer.str(), filename, prm);
     }
 

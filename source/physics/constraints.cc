@@ -159,11 +159,11 @@ namespace ndda
         if (bc.type != parameters::ConstraintType::fixed)
           {
             function = functions.size();
-            functions.push_back(
-              make_function(bc.value,
-                            bc.type == parameters::ConstraintType::roller ? 1 :
-                                                                            2,
-                            true));
+            functions.push_back(std::make_unique<Expression>(
+              bc.value,
+              bc.type == parameters::ConstraintType::roller ? 1 : 2,
+              true,
+              where + "/Value"));
           }
         const double angle = bc.roller_angle * numbers::PI / 180.;
         Tensor<1, 2> normal;
@@ -288,6 +288,19 @@ namespace ndda
           }
       }
     return target;
+  }
+
+
+
+  void
+  Constraints::check_expressions(const std::vector<double> &times)
+  {
+    std::vector<std::vector<Point<2>>> points(functions.size());
+    for (const auto &nc : node_constraints)
+      if (nc.function < functions.size())
+        points[nc.function].push_back(nc.position);
+    for (unsigned int f = 0; f < functions.size(); ++f)
+      functions[f]->check(points[f], times);
   }
 
 

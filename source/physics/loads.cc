@@ -58,13 +58,15 @@ namespace ndda
                        const DoFHandler<2>     &dof_handler,
                        const DofMap            &dof_map)
   {
-    loads   = loads_in;
-    gravity = make_function(loads.gravity, 2, true);
+    loads = loads_in;
+    gravity =
+      std::make_unique<Expression>(loads.gravity, 2, true, "Loads/Gravity");
     point_functions.clear();
     point_evaluators.clear();
     for (const auto &load : loads.point_loads)
       {
-        point_functions.push_back(make_function(load.force, 2, true));
+        point_functions.push_back(std::make_unique<Expression>(
+          load.force, 2, true, "Loads/" + load.name + "/Force"));
         point_evaluators.push_back(
           make_point_evaluator(mesh,
                                dof_handler.get_fe(),
@@ -81,7 +83,10 @@ namespace ndda
       {
         const auto &load = loads.line_loads[l];
         line_functions.push_back(
-          make_function(load.value, load.is_pressure ? 1 : 2, true));
+          std::make_unique<Expression>(load.value,
+                                       load.is_pressure ? 1 : 2,
+                                       true,
+                                       "Loads/" + load.name + "/Value"));
         unsigned int n_faces = 0;
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (unsigned int f = 0; f < cell->n_faces(); ++f)
@@ -169,6 +174,23 @@ namespace ndda
         gravity_load[d].reinit(dof_map.n_dofs);
         mass.vmult(gravity_load[d], unit);
       }
+  }
+
+
+
+  void
+  ExternalLoads::check_expressions(const std::vector<double> &times)
+  {
+    gravity->check({Point<2>()}, times);
+    for (unsigned int l = 0; l < point_functions.size(); ++l)
+      point_functions[l]->check({loads.point_loads[l].point}, times);
+    std::vector<std::vector<Point<2>>> points(line_functions.size());
+    for (const auto &face : loaded_faces)
+      points[face.line_load].insert(points[face.line_load].end(),
+                                    face.points.begin(),
+                                    face.points.end());
+    for (unsigned int l = 0; l < line_functions.size(); ++l)
+      line_functions[l]->check(points[l], times);
   }
 
 

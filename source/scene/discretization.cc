@@ -227,6 +227,17 @@ namespace ndda
 
 
 
+    void
+    Discretization::check_expressions(const parameters::Parameters &parameters)
+    {
+      const std::vector<double> times =
+        Expression::check_times(parameters.control.end_time);
+      loads.check_expressions(times);
+      constraints.check_expressions(times);
+    }
+
+
+
     bool
     Discretization::update_matrices(const parameters::Parameters &parameters,
                                     const bool            only_moved_cells,

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include <deal.II/base/function_parser.h>
-
+#include <ndda/base/expression.h>
 #include <ndda/base/utilities.h>
 #include <ndda/geometry/block_mesh.h>
 #include <ndda/mesh/boundary_edges.h>
@@ -146,9 +145,10 @@ namespace ndda
     {
       const std::vector<parameters::InitialState> block_state =
         initial_states(parameters, mesh);
-      std::vector<std::unique_ptr<FunctionParser<2>>> initial_velocity;
+      std::vector<std::unique_ptr<Expression>> initial_velocity;
       for (const auto &state : block_state)
-        initial_velocity.push_back(make_function(state.velocity, 2, false));
+        initial_velocity.push_back(std::make_unique<Expression>(
+          state.velocity, 2, false, state.where + "/Initial velocity"));
 
       const auto &fe      = dof_handler.get_fe();
       const auto  support = fe.base_element(0).get_unit_support_points();

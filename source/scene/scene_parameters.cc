@@ -49,6 +49,7 @@ namespace ndda
                                           3);
         state.stress        = {{stress[0], stress[1], stress[2]}};
         state.velocity      = prm.get("Initial velocity");
+        state.where         = where;
         check_function(state.velocity, 2, "x,y", where + "/Initial velocity");
         state.kinematics = Utilities::trim(prm.get("Kinematics"));
         if (!state.kinematics.empty())

@@ -2,7 +2,6 @@
 #ifndef ndda_base_utilities_h
 #define ndda_base_utilities_h
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
 #include <ndda/geometry/block_mesh.h>
@@ -19,16 +18,6 @@ namespace ndda
   /** Distance (m) of @p p to the segment @p s. */
   double
   distance_to_segment(const dealii::Point<2> &p, const geometry::Segment &s);
-
-  /**
-   * A muparser function of (x, y) or, with @p time_dependent, of (x, y, t)
-   * with @p n_components components separated by ';' and the constant pi.
-   * The expressions were checked when the parameters were read.
-   */
-  std::unique_ptr<dealii::FunctionParser<2>>
-  make_function(const std::string &expression,
-                const unsigned int n_components,
-                const bool         time_dependent);
 
   /**
    * The distance below which two points of a scene are the same point:

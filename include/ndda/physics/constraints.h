@@ -2,7 +2,6 @@
 #ifndef ndda_physics_constraints_h
 #define ndda_physics_constraints_h
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -15,6 +14,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ndda/base/expression.h>
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/physics/physics_parameters.h>
 
@@ -147,6 +147,14 @@ namespace ndda
                          const Vector<double> &displacement,
                          Vector<double>       &increment) const;
 
+    /**
+     * Evaluate every prescribed value's expression, every component, at
+     * the nodes it constrains and at each of @p times: throws naming the
+     * entry on the first value that is not finite.
+     */
+    void
+    check_expressions(const std::vector<double> &times);
+
     /** Penalty method: add the springs of stiffness @p k to @p matrix. */
     void
     add_penalty_springs(const double                  k,
@@ -175,10 +183,10 @@ namespace ndda
                      const Vector<double> &displacement) const;
 
     parameters::ConstraintMethod method = parameters::ConstraintMethod::exact;
-    const kinematics::ReducedBlocks                        *reduced = nullptr;
-    dealii::AffineConstraints<double>                       constraints;
-    std::vector<NodeConstraint>                             node_constraints;
-    std::vector<std::unique_ptr<dealii::FunctionParser<2>>> functions;
+    const kinematics::ReducedBlocks         *reduced = nullptr;
+    dealii::AffineConstraints<double>        constraints;
+    std::vector<NodeConstraint>              node_constraints;
+    std::vector<std::unique_ptr<Expression>> functions;
   };
 } // namespace ndda
 

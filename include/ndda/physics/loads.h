@@ -2,7 +2,6 @@
 #ifndef ndda_physics_loads_h
 #define ndda_physics_loads_h
 
-#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/tensor.h>
@@ -14,9 +13,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ndda/base/expression.h>
 #include <ndda/mesh/crackable_mesh.h>
-#include <ndda/physics/physics_parameters.h>
 #include <ndda/physics/dof_map.h>
+#include <ndda/physics/physics_parameters.h>
 
 #include <memory>
 #include <string>
@@ -37,7 +37,7 @@ namespace ndda
    */
   struct PointEvaluator
   {
-    unsigned int                                  cell;
+    unsigned int                                 cell;
     std::vector<dealii::types::global_dof_index> dofs;
     /// Value of each local shape function; its component in component[i].
     std::vector<double>       shape_values;
@@ -54,11 +54,11 @@ namespace ndda
    * block.
    */
   PointEvaluator
-  make_point_evaluator(const CrackableMesh             &mesh,
+  make_point_evaluator(const CrackableMesh            &mesh,
                        const dealii::FiniteElement<2> &fe,
-                       const DofMap                    &dof_map,
-                       const Point<2>                  &p,
-                       const std::string               &entry);
+                       const DofMap                   &dof_map,
+                       const Point<2>                 &p,
+                       const std::string              &entry);
 
   /**
    * The external loads of a scene (thesis 3.5): gravity as the consistent
@@ -90,15 +90,25 @@ namespace ndda
      * geometry.
      */
     void
-    update_faces(const dealii::DoFHandler<2>   &dof_handler,
-                 const dealii::Mapping<2>      &mapping,
-                 const dealii::Quadrature<1>   &face_quadrature,
-                 const double                   thickness);
+    update_faces(const dealii::DoFHandler<2> &dof_handler,
+                 const dealii::Mapping<2>    &mapping,
+                 const dealii::Quadrature<1> &face_quadrature,
+                 const double                 thickness);
 
     /** The gravity load vectors M e_x and M e_y, from the mass matrix. */
     void
     update_gravity(const dealii::SparseMatrix<double> &mass,
                    const DofMap                       &dof_map);
+
+    /**
+     * Evaluate every load's expression, every component, where the run
+     * evaluates it (gravity at the origin, a point load at its point, a
+     * line load at its faces' quadrature points) at each of @p times:
+     * throws naming the entry on the first value that is not finite.
+     * Call after update_faces().
+     */
+    void
+    check_expressions(const std::vector<double> &times);
 
     /** Add the loads at time @p t to @p force. */
     void
@@ -108,24 +118,24 @@ namespace ndda
     /** Precomputed quadrature data of one loaded boundary face. */
     struct LoadedFace
     {
-      unsigned int                                  line_load;
-      unsigned int                                  cell;
-      unsigned int                                  face;
+      unsigned int                                 line_load;
+      unsigned int                                 cell;
+      unsigned int                                 face;
       std::vector<dealii::types::global_dof_index> dofs;
-      std::vector<unsigned int>                     component;
+      std::vector<unsigned int>                    component;
       /// shape_values[q][i] * JxW[q] * thickness
       std::vector<std::vector<double>> weighted_shape;
       std::vector<Point<2>>            points;
       std::vector<Tensor<1, 2>>        normals;
     };
 
-    parameters::Loads                                       loads;
-    std::unique_ptr<dealii::FunctionParser<2>>              gravity;
-    Vector<double>                                          gravity_load[2];
-    std::vector<std::unique_ptr<dealii::FunctionParser<2>>> point_functions;
-    std::vector<PointEvaluator>                             point_evaluators;
-    std::vector<std::unique_ptr<dealii::FunctionParser<2>>> line_functions;
-    std::vector<LoadedFace>                                 loaded_faces;
+    parameters::Loads                        loads;
+    std::unique_ptr<Expression>              gravity;
+    Vector<double>                           gravity_load[2];
+    std::vector<std::unique_ptr<Expression>> point_functions;
+    std::vector<PointEvaluator>              point_evaluators;
+    std::vector<std::unique_ptr<Expression>> line_functions;
+    std::vector<LoadedFace>                  loaded_faces;
   };
 } // namespace ndda
 

@@ -140,6 +140,16 @@ namespace ndda
       setup_loads(const parameters::Parameters &parameters);
 
       /**
+       * After setup_loads(): evaluate every expression of the loads and
+       * prescribed values where the run uses it, at 65 times from 0 to
+       * Control/End time, and throw naming the entry on the first value
+       * that is not finite (so that --validate finds a history that
+       * turns NaN late in the run).
+       */
+      void
+      check_expressions(const parameters::Parameters &parameters);
+
+      /**
        * With @p only_moved_cells, recompute the element matrices of the
        * cells that moved beyond Control/Matrix update tolerance (of every
        * cell if the constitutive law's tangent depends on the stress: then

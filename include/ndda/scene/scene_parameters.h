@@ -29,6 +29,9 @@ namespace ndda
       std::array<double, 3> stress = {{0., 0., 0.}};
       /// Velocity components as functions of x, y (muparser).
       std::string velocity = "0; 0";
+      /// The subsection it was read from (e.g. "Geometry/disc"), for
+      /// messages.
+      std::string where = "Geometry";
       /// The block kinematics model the block starts with (a name of
       /// kinematics::BlockKinematicsRegistry); empty: Control/Kinematics.
       std::string kinematics;
