@@ -12,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -538,6 +541,84 @@ namespace ndda
 
 
 
+      namespace
+      {
+        double
+        ring_area(const std::vector<IPoint> &ring)
+        {
+          double twice = 0;
+          for (std::size_t i = 0; i < ring.size(); ++i)
+            {
+              const IPoint &a = ring[i], &b = ring[(i + 1) % ring.size()];
+              twice += CGAL::to_double(a.x()) * CGAL::to_double(b.y()) -
+                       CGAL::to_double(b.x()) * CGAL::to_double(a.y());
+            }
+          return std::abs(twice) / 2.;
+        }
+
+
+
+        /**
+         * Refuse, before meshing, a scene whose blocks need more cells
+         * than Geometry/Maximum number of cells: a mesh size far too small
+         * would otherwise hang in the mesher with no word. The estimate is
+         * a lower bound: no triangle with a longest edge h has more area
+         * than the equilateral one, sqrt(3)/4 h^2.
+         */
+        void
+        check_cell_count(const SceneGeometry        &geometry,
+                         const std::vector<Polygon> &polygons)
+        {
+          std::vector<std::pair<double, std::string>> counts;
+          double                                      total = 0;
+          const auto add = [&](const Polygon     &polygon,
+                               const double       mesh_size,
+                               const unsigned int target_n_cells) {
+            double area = ring_area(polygon.outer);
+            for (const auto &hole : polygon.holes)
+              area -= ring_area(hole);
+            const double n =
+              mesh_size > 0. ?
+                area / (std::sqrt(3.) / 4. * mesh_size * mesh_size) :
+                double(target_n_cells);
+            std::ostringstream what;
+            what << polygon.kind << " '" << polygon.name << "': area " << area
+                 << " m^2, ";
+            if (mesh_size > 0.)
+              what << "mesh size " << mesh_size << " m";
+            else
+              what << "target number of elements " << target_n_cells;
+            counts.emplace_back(n, what.str());
+            total += n;
+          };
+          for (std::size_t b = 0; b < geometry.blocks.size(); ++b)
+            add(polygons[b],
+                geometry.blocks[b].mesh_size,
+                geometry.blocks[b].target_n_cells);
+          for (std::size_t r = 0; r < geometry.regions.size(); ++r)
+            add(polygons[geometry.blocks.size() + r],
+                geometry.regions[r].mesh_size,
+                geometry.regions[r].target_n_cells);
+          if (total <= geometry.max_cells)
+            return;
+          std::sort(counts.begin(), counts.end(), std::greater<>());
+          std::ostringstream message;
+          message << std::setprecision(3) << "Geometry: the scene needs at "
+                  << "least " << total << " cells, more than Geometry/Maximum "
+                  << "number of cells = " << geometry.max_cells
+                  << " (a P1 cell takes about 6 kB in a run). The largest: ";
+          for (std::size_t i = 0; i < std::min<std::size_t>(3, counts.size());
+               ++i)
+            message << (i > 0 ? "; " : "") << counts[i].second
+                    << " -> at least " << counts[i].first << " cells";
+          message << ". Give a larger mesh size, or raise the limit if the "
+                     "machine holds such a scene.";
+          AssertThrow(false, dealii::ExcMessage(message.str()));
+        }
+      } // namespace
+
+
+
       std::vector<Polygon>
       validate_scene(const SceneGeometry &geometry)
       {
@@ -562,6 +643,7 @@ namespace ndda
                             region.target_n_cells);
             check_joints(polygons.back(), region.joints);
           }
+        check_cell_count(geometry, polygons);
         check_overlaps(polygons);
         return polygons;
       }

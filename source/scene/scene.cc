@@ -86,6 +86,7 @@ namespace ndda
           scene.blocks            = geometry.blocks;
           scene.regions           = geometry.regions;
           scene.min_angle         = geometry.min_angle;
+          scene.max_cells         = geometry.max_cells;
           scene.required_vertices = required_vertices(parameters);
           mesh.build(geometry::mesh_scene(scene));
         }

@@ -130,6 +130,17 @@ namespace ndda
                         "file, 'tag: material, tag: material'. Empty: the "
                         "physical tag is the material id, an index into "
                         "Materials/Names (0 is the first).");
+      prm.declare_entry(
+        "Maximum number of cells",
+        "1000000",
+        Patterns::Integer(1),
+        "Refuse, before meshing, a scene whose blocks need more cells than "
+        "this: from each block's area and mesh size, the fewest cells a "
+        "mesh with that longest edge can have (equilateral triangles, "
+        "area sqrt(3)/4 h^2; the mesher makes 2 to 3 times as many), or "
+        "its target number of elements. A meshed cell takes about "
+        "6 kB of memory in a run (P1 with the direct solver, measured at 8e4 and 3e5 cells; P2 more); "
+        "raise the limit for larger scenes on a machine that holds them.");
       prm.declare_entry("Minimum angle",
                         "30",
                         Patterns::Double(10., 33.),
@@ -196,6 +207,7 @@ namespace ndda
     {
       prm.enter_subsection("Geometry");
       min_angle = prm.get_double("Minimum angle");
+      max_cells = prm.get_double("Maximum number of cells");
       mesh_file = prm.get("Mesh file");
       if (!mesh_file.empty())
         {

@@ -92,6 +92,9 @@ namespace ndda
       std::vector<Point<2>> required_vertices;
       /// Minimum angle of the Delaunay refinement (degrees).
       double min_angle = 30.;
+      /// Largest number of cells the scene may need: a scene whose
+      /// smallest possible mesh has more is refused before meshing.
+      double max_cells = 1e6;
     };
 
     /**

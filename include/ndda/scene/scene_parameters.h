@@ -50,6 +50,8 @@ namespace ndda
       /// ("tag: material, ..."), empty means material id = tag.
       std::vector<std::pair<unsigned int, std::string>> mesh_file_materials;
       double                                            min_angle;
+      /// Geometry/Maximum number of cells.
+      double max_cells;
 
       static void
       declare_parameters(ParameterHandler               &prm,
