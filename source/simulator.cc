@@ -2,11 +2,15 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <ndda/base/atomic_file.h>
+#include <ndda/base/stage_reporter.h>
 #include <ndda/mesh/state_transfer.h>
+#include <ndda/physics/free_bodies.h>
 #include <ndda/scene/scene.h>
 #include <ndda/simulator.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 namespace ndda
@@ -66,17 +70,37 @@ namespace ndda
   Simulator<dim>::setup()
   {
     SectionTimer::Scope scope(timer, "setup");
+    // A large scene says what it is doing once a stage takes more than a
+    // few seconds.
+    StageReporter stages(console);
+    stages.begin("checking and meshing the geometry");
     scene::build_mesh(parameters, user_triangulation.get(), mesh);
     scene_half_height = scene::half_height(mesh);
+    stages.begin("numbering the unknowns");
     fem.setup_kinematics(parameters);
 
     setup_dofs();
+    stages.begin("constraints and the linear system");
     fem.setup_constraints(parameters);
     fem.setup_system(parameters);
+    stages.begin("contacts");
     setup_contacts();
     if (parameters.contact.enabled)
       detection.initialize(parameters.contact.detection_rule,
                            contact_distances.detection);
+    if (parameters.control.analysis_type == time::AnalysisType::quasi_static)
+      require_held_bodies(
+        mesh.get_block_mesh(),
+        fem.dof_map,
+        rigid_supports(mesh.get_block_mesh(),
+                       fem.dof_map,
+                       fem.constraints,
+                       fem.bolts,
+                       parameters.contact.enabled ?
+                         contacts.get_settings().state_tolerance :
+                         -1.),
+        "Control/Analysis type = quasi-static");
+    stages.begin("fracture, loads and measure points");
     fracture_check.setup(mesh,
                          fem.cell_material,
                          scene::material_strengths(parameters.materials),
@@ -86,6 +110,7 @@ namespace ndda
     measure_points.setup(
       mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, false);
 
+    stages.begin("stresses and the initial state");
     stresses.initialize(fem.element_cache,
                         fem.dof_map,
                         parameters.materials,
@@ -688,7 +713,7 @@ namespace ndda
 
   template <int dim>
   void
-  Simulator<dim>::write_statistics() const
+  Simulator<dim>::write_statistics()
   {
     statistics.write(parameters.output.directory + "statistics");
     measure_points.write(parameters.output.directory + "measure_points.txt");
@@ -709,8 +734,9 @@ namespace ndda
     log_file.open(directory + "log.txt", console);
     if (parameters_from_file)
       {
-        std::ofstream used(directory + "parameters.prm");
-        prm.print_parameters(used, ParameterHandler::PRM);
+        AtomicFile used(directory + "parameters.prm");
+        prm.print_parameters(used.stream(), ParameterHandler::PRM);
+        used.commit();
       }
 
     pcout << "ndda: scene '" << parameters.scene_name << "'\n"
@@ -721,10 +747,16 @@ namespace ndda
     postprocess::OutputSchedule schedule(parameters.output.interval,
                                          parameters.control.end_time);
     output_results();
+    // A step that takes long (many cuts, a cascade of cracks) says so.
+    StageReporter long_step(console, 10., 30., "");
     while (!schedule.finished(time))
       {
         try
           {
+            char t[32];
+            std::snprintf(t, sizeof(t), "%.6g", time);
+            long_step.begin("step " + std::to_string(step_number + 1) +
+                            " at t = " + t + " s");
             do_time_step();
           }
         catch (...)
@@ -748,6 +780,7 @@ namespace ndda
             write_statistics();
           }
       }
+    long_step.end();
     write_statistics();
     pcout << "  done: " << step_number << " steps, "
           << step_controller.n_total_cuts() << " step cuts, "

@@ -196,6 +196,7 @@ end
                      {{"model", automatic ? "auto" : model},
                       {"start", model == "rigid auto" ? "rigid" : "affine"}}),
           "drop"));
+        simulator.keep_measure_histories(); // the whole history
         simulator.setup();
         unsigned int most_meshed = 0;
         while (simulator.get_time() < 0.2 - 1e-12)

@@ -61,6 +61,7 @@ main(int argc, char **argv)
             "subsection Fracture\n  set Split edges = false\nend\n";
     const auto         parameters = read_parameters(text, "bar_spalling");
     ndda::Simulator<2> simulator(parameters);
+    simulator.keep_measure_histories(); // the whole history
     simulator.setup();
     while (simulator.get_time() < 2.7e-4 - 1e-12)
       simulator.do_time_step();
@@ -99,6 +100,7 @@ main(int argc, char **argv)
     text += "subsection Output\n  set Interval = 0\nend\n";
     const auto         parameters = read_parameters(text, "bar_spalling");
     ndda::Simulator<2> simulator(parameters);
+    simulator.keep_measure_histories(); // the whole history
     simulator.setup();
     while (simulator.get_time() < 4e-4 - 1e-12)
       simulator.do_time_step();

@@ -146,6 +146,7 @@ main(int argc, char **argv)
                                    {{"integrator", integrator}, {"h", h}}),
                         "elastic_bar_wave");
       ndda::Simulator<2> simulator(parameters);
+      simulator.keep_measure_histories(); // the whole history
       simulator.run();
       const auto  &histories = simulator.get_measure_histories();
       const double x[3]      = {0.25, 0.5, 0.97};

@@ -12,6 +12,7 @@
 
 #include <ndda/geometry/block_mesh.h>
 
+#include <cmath>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -273,6 +274,65 @@ main()
     scene       = scene_with(r);
     scene.blocks.push_back(block("core", rectangle(1, 1, 2, 2)));
     expect_success("block in the hole of a region", scene);
+  }
+
+  // Corners computed by trigonometry (Geometry/Snapping tolerance): a
+  // block standing on a 30 degree incline, its base corners 2.0 and 2.3 m
+  // up the slope, the incline a plain triangle. The corners lie a rounding
+  // error off the slope; the overlap is a sliver that the tolerance takes
+  // as touching, and that exact geometry (tolerance 0) refuses.
+  {
+    const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+    const auto   on_slope = [&](const double d, const double up) {
+      return Point<2>(d * c - up * s, d * s + up * c);
+    };
+    SceneGeometry scene;
+    scene.blocks = {
+      block("incline",
+            {Point<2>(0, 0), Point<2>(5 * c, 0), Point<2>(5 * c, 5 * s)}),
+      block("block",
+            {on_slope(2.0, 0),
+             on_slope(2.3, 0),
+             on_slope(2.3, 1),
+             on_slope(2.0, 1)})};
+    expect_success("a block on an incline, corners by trigonometry", scene);
+    scene.snap_tolerance = 0;
+    expect_error("the same with Snapping tolerance = 0",
+                 scene,
+                 {"Geometry: block 'incline': ", "overlaps block 'block'"});
+    // An overlap of 1e-6 of the scene's size is not a rounding error.
+    scene.snap_tolerance = 1e-9;
+    scene.blocks[1]      = block("block",
+                            {on_slope(2.0, -1e-6),
+                                  on_slope(2.3, -1e-6),
+                                  on_slope(2.3, 1),
+                                  on_slope(2.0, 1)});
+    expect_error("a block sunk 1e-6 m into the incline",
+                 scene,
+                 {"Geometry: block 'incline': ", "overlaps block 'block'"});
+
+    // Corners 1e-13 m apart become one point: the meshes of the two blocks
+    // then share the corner's coordinates exactly.
+    scene.blocks            = {block("left", rectangle(0, 0, 1, 1)),
+                               block("right",
+                          {Point<2>(1 + 1e-13, -1e-13),
+                                      Point<2>(2, 0),
+                                      Point<2>(2, 1),
+                                      Point<2>(1, 1 + 1e-13)})};
+    const BlockMesh mesh    = mesh_scene(scene);
+    unsigned int    matched = 0;
+    for (const auto &p : mesh.vertices)
+      if (p == Point<2>(1, 0) || p == Point<2>(1, 1))
+        ++matched;
+    std::cout << "corners 1e-13 m apart: " << matched
+              << " vertices at (1, 0) and (1, 1) (4: two per block)"
+              << std::endl;
+    if (matched != 4)
+      {
+        std::cerr << "FAILED: corners 1e-13 m apart were not snapped"
+                  << std::endl;
+        ++n_failures;
+      }
   }
 
   ndda_tests::record("geometry_bad_input.refused", n_refused);

@@ -117,10 +117,9 @@ namespace
             "\n  end\nend\n"
             "subsection Geometry\n  subsection incline\n"
             "    set Outer boundary = 0, 0; 4.3301270189221936, 0; "
-            "4.3301270189221936, 2.4999999999999996; " +
-            xy(p1) + "; " + xy(p0) +
-            "\n  end\n  subsection block\n    set Outer boundary = " + xy(p0) +
-            "; " + xy(p1) + "; " + xy(p2) + "; " + xy(p3) +
+            "4.3301270189221936, 2.4999999999999996"
+            "\n  end\n  subsection block\n    set Outer boundary = " +
+            xy(p0) + "; " + xy(p1) + "; " + xy(p2) + "; " + xy(p3) +
             "\n    set Kinematics = " + model +
             "\n  end\nend\n"
             "subsection Output\n  set Interval = 0\n  set Write vtu = false\n"

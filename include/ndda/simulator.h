@@ -201,11 +201,24 @@ namespace ndda
     void
     assemble_external_force(const double t, Vector<double> &force) const;
 
-    /** Histories of the measure points, one vector per point. */
+    /**
+     * Histories of the measure points, one vector per point: the last
+     * sample is back(). The run streams the samples to measure_points.txt
+     * and keeps only those not yet written, unless
+     * keep_measure_histories() was called before run().
+     */
     const std::vector<std::vector<MeasureSample>> &
     get_measure_histories() const
     {
       return measure_points.get_histories();
+    }
+
+    /** Keep every measure-point sample in memory for
+     * get_measure_histories(). */
+    void
+    keep_measure_histories()
+    {
+      measure_points.keep_all();
     }
 
     /** Kinetic energy 1/2 v^T M v (J). */
@@ -499,7 +512,7 @@ namespace ndda
     void
     output_results();
     void
-    write_statistics() const;
+    write_statistics();
 
     parameters::Parameters              parameters;
     ParameterHandler                    prm;
@@ -577,8 +590,8 @@ namespace ndda
 
     StepReport step_report;
     /// Rows not yet written (mutable: writing them forgets them).
-    mutable postprocess::StatisticsTable statistics;
-    postprocess::VisualizationWriter     visualization;
+    postprocess::StatisticsTable     statistics;
+    postprocess::VisualizationWriter visualization;
   };
 } // namespace ndda
 

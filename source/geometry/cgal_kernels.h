@@ -271,6 +271,24 @@ namespace ndda
       std::vector<Polygon>
       validate_scene(const SceneGeometry &geometry);
 
+      /**
+       * The scene's size: the diagonal of the bounding box of the outer
+       * rings of all blocks and regions.
+       */
+      double
+      scene_size(const SceneGeometry &geometry);
+
+      /**
+       * @p geometry with the corners of its blocks' and regions' rings
+       * snapped: a corner within geometry.snap_tolerance * scene_size() of
+       * a corner of an earlier block or region (in input order, blocks
+       * before regions) takes that corner's coordinates. Corners of one
+       * block are not snapped to each other. Linear in the number of
+       * corners (a hash grid of the tolerance's size).
+       */
+      SceneGeometry
+      snap_corners(SceneGeometry geometry);
+
 
       // --- block_cutting.cc ---
 

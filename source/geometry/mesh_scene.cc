@@ -62,8 +62,11 @@ namespace ndda
 
 
     BlockMesh
-    mesh_scene(const SceneGeometry &geometry)
+    mesh_scene(const SceneGeometry &input)
     {
+      // Corners computed by trigonometry land within a rounding error of
+      // each other: they become one point before anything is checked.
+      const SceneGeometry geometry = internal::snap_corners(input);
       // Validate everything before meshing anything, so that the user sees
       // the input errors at once.
       const std::vector<internal::Polygon> polygons =

@@ -12,10 +12,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "cgal_kernels.h"
@@ -421,10 +424,13 @@ namespace ndda
          * points is fine. All rings go into one arrangement; every face knows
          * the set of polygons it lies in (crossing an edge of a ring of a
          * polygon toggles that polygon), and a face in two polygons is an
-         * overlap.
+         * overlap, unless it is thinner than @p thin (m): twice its area over
+         * its perimeter, the width of a sliver, is at most @p thin. Corners
+         * computed by trigonometry lie a rounding error off the edge they
+         * should lie on.
          */
         void
-        check_overlaps(const std::vector<Polygon> &polygons)
+        check_overlaps(const std::vector<Polygon> &polygons, const double thin)
         {
           if (polygons.size() < 2)
             return;
@@ -466,6 +472,25 @@ namespace ndda
               const Owners &owners = states.at(&*face);
               if (owners.size() < 2)
                 continue;
+              if (thin > 0 && face->has_outer_ccb())
+                {
+                  double     area = 0, perimeter = 0;
+                  const auto first = face->outer_ccb();
+                  auto       h     = first;
+                  do
+                    {
+                      const auto  &a  = h->source()->point();
+                      const auto  &b  = h->target()->point();
+                      const double ax = CGAL::to_double(a.x()),
+                                   ay = CGAL::to_double(a.y()),
+                                   bx = CGAL::to_double(b.x()),
+                                   by = CGAL::to_double(b.y());
+                      area += 0.5 * (ax * by - ay * bx);
+                      perimeter += std::hypot(bx - ax, by - ay);
+                  } while (++h != first);
+                  if (2. * std::abs(area) <= thin * perimeter)
+                    continue;
+                }
               const Polygon &a = polygons[owners[0]];
               const Polygon &b = polygons[owners[1]];
               AssertThrow(false,
@@ -644,8 +669,105 @@ namespace ndda
             check_joints(polygons.back(), region.joints);
           }
         check_cell_count(geometry, polygons);
-        check_overlaps(polygons);
+        check_overlaps(polygons,
+                       geometry.snap_tolerance * scene_size(geometry));
         return polygons;
+      }
+
+
+
+      double
+      scene_size(const SceneGeometry &geometry)
+      {
+        const double infinity = std::numeric_limits<double>::infinity();
+        Point<2>     lower(infinity, infinity), upper(-infinity, -infinity);
+        const auto   add = [&](const std::vector<Point<2>> &ring) {
+          for (const auto &p : ring)
+            if (std::isfinite(p[0]) && std::isfinite(p[1]))
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  lower[d] = std::min(lower[d], p[d]);
+                  upper[d] = std::max(upper[d], p[d]);
+                }
+        };
+        for (const auto &block : geometry.blocks)
+          add(block.outer);
+        for (const auto &region : geometry.regions)
+          add(region.outer);
+        return lower[0] <= upper[0] ? upper.distance(lower) : 0.;
+      }
+
+
+
+      SceneGeometry
+      snap_corners(SceneGeometry geometry)
+      {
+        const double tolerance = geometry.snap_tolerance;
+        AssertThrow(tolerance >= 0 && tolerance <= 1e-3,
+                    dealii::ExcMessage(
+                      "Geometry/Snapping tolerance: " +
+                      std::to_string(tolerance) +
+                      " is not in [0, 1e-3]. It is relative to the scene's "
+                      "size; the default 1e-9 covers rounding errors."));
+        const double h = tolerance * scene_size(geometry);
+        if (!(h > 0) || !std::isfinite(h))
+          return geometry;
+
+        // The rings in input order, each with its owner.
+        std::vector<std::pair<unsigned int, std::vector<Point<2>> *>> rings;
+        unsigned int                                                  owner = 0;
+        for (auto &block : geometry.blocks)
+          {
+            rings.emplace_back(owner, &block.outer);
+            for (auto &hole : block.holes)
+              rings.emplace_back(owner, &hole);
+            ++owner;
+          }
+        for (auto &region : geometry.regions)
+          {
+            rings.emplace_back(owner, &region.outer);
+            for (auto &hole : region.holes)
+              rings.emplace_back(owner, &hole);
+            ++owner;
+          }
+
+        // A hash grid of cells of size h: a corner's match lies in one of
+        // the nine cells around its own.
+        struct Corner
+        {
+          Point<2>     position;
+          unsigned int owner;
+        };
+        std::unordered_map<std::uint64_t, std::vector<Corner>> grid;
+        const auto key = [](const std::int64_t i, const std::int64_t j) {
+          return (static_cast<std::uint64_t>(i) << 32) ^
+                 static_cast<std::uint64_t>(j & 0xffffffff);
+        };
+        for (auto &[ring_owner, ring] : rings)
+          for (auto &p : *ring)
+            {
+              if (!std::isfinite(p[0]) || !std::isfinite(p[1]) ||
+                  std::abs(p[0]) / h > 1e15 || std::abs(p[1]) / h > 1e15)
+                continue;
+              const auto    i = static_cast<std::int64_t>(std::floor(p[0] / h));
+              const auto    j = static_cast<std::int64_t>(std::floor(p[1] / h));
+              const Corner *match = nullptr;
+              for (std::int64_t di = -1; di <= 1 && !match; ++di)
+                for (std::int64_t dj = -1; dj <= 1 && !match; ++dj)
+                  if (const auto cell = grid.find(key(i + di, j + dj));
+                      cell != grid.end())
+                    for (const auto &c : cell->second)
+                      if (c.owner != ring_owner && c.position.distance(p) <= h)
+                        {
+                          match = &c;
+                          break;
+                        }
+              if (match)
+                p = match->position;
+              else
+                grid[key(i, j)].push_back({p, ring_owner});
+            }
+        return geometry;
       }
     } // namespace internal
   }   // namespace geometry

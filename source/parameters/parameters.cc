@@ -26,6 +26,123 @@ namespace ndda
     namespace
     {
       /**
+       * The lines of @p input that enter a subsection or set an entry that
+       * @p prm does not declare, or give a value with braces (which would
+       * escape its pattern's check), as "line N: ..." texts, in file order.
+       * Comments, continued lines and the entries inside an undeclared
+       * subsection (not reported again) are taken care of.
+       */
+      std::vector<std::string>
+      input_problems(const std::string &input, const ParameterHandler &prm)
+      {
+        // The declared subsections and entries, as paths joined by '\x1f':
+        // from the handler's own listing (ParameterHandler has no query
+        // for an entry that a Release build checks).
+        const auto key_of = [](const std::vector<std::string> &path,
+                               const std::string              &last) {
+          std::string key;
+          for (const auto &s : path)
+            key += s + '\x1f';
+          return key + last;
+        };
+        std::set<std::string> subsections, entries;
+        {
+          std::ostringstream listing;
+          prm.print_parameters(listing, ParameterHandler::ShortPRM);
+          std::istringstream       lines(listing.str());
+          std::vector<std::string> path;
+          std::string              l;
+          while (std::getline(lines, l))
+            {
+              l = Utilities::trim(l);
+              if (l.rfind("subsection ", 0) == 0)
+                {
+                  subsections.insert(
+                    key_of(path, Utilities::trim(l.substr(11))));
+                  path.push_back(Utilities::trim(l.substr(11)));
+                }
+              else if (l == "end" && !path.empty())
+                path.pop_back();
+              else if (l.rfind("set ", 0) == 0)
+                entries.insert(
+                  key_of(path, Utilities::trim(l.substr(4, l.find('=') - 4))));
+            }
+        }
+
+        std::vector<std::string> found;
+        std::vector<std::string> path;
+        // Depth inside an undeclared subsection.
+        unsigned int       skipped = 0;
+        std::istringstream in(input);
+        std::string        raw, line;
+        unsigned int       number = 0, start = 0;
+        const auto         where = [&]() {
+          std::string text;
+          for (const auto &s : path)
+            text += (text.empty() ? "" : "/") + s;
+          return text.empty() ? std::string("at the top level") :
+                                        "in subsection '" + text + "'";
+        };
+        while (std::getline(in, raw))
+          {
+            ++number;
+            if (line.empty())
+              start = number;
+            raw = Utilities::trim(raw.substr(0, raw.find('#')));
+            if (!raw.empty() && raw.back() == '\\')
+              {
+                line += raw.substr(0, raw.size() - 1) + " ";
+                continue;
+              }
+            const std::string text = Utilities::trim(line + raw);
+            line.clear();
+            std::istringstream words(text);
+            std::string        keyword;
+            words >> keyword;
+            const std::string rest = Utilities::trim(
+              text.substr(std::min(text.size(), keyword.size())));
+            const std::string here = "line " + std::to_string(start) + ": ";
+            if (keyword == "subsection")
+              {
+                if (skipped > 0 || subsections.count(key_of(path, rest)) == 0)
+                  {
+                    if (skipped == 0)
+                      found.push_back(here + "no subsection '" + rest + "' " +
+                                      where());
+                    ++skipped;
+                  }
+                else
+                  path.push_back(rest);
+              }
+            else if (keyword == "end")
+              {
+                if (skipped > 0)
+                  --skipped;
+                else if (!path.empty())
+                  path.pop_back();
+              }
+            else if (keyword == "set" && skipped == 0)
+              {
+                const std::string name =
+                  Utilities::trim(rest.substr(0, rest.find('=')));
+                const auto equals = rest.find('=');
+                if (entries.count(key_of(path, name)) == 0)
+                  found.push_back(here + "no entry '" + name + "' " + where());
+                else if (equals != std::string::npos &&
+                         rest.find_first_of("{}", equals) != std::string::npos)
+                  // ParameterHandler takes a value with braces for a set of
+                  // variations and skips its pattern check.
+                  found.push_back(here + "the value of '" + name +
+                                  "' holds a brace '{' or '}', which is "
+                                  "deal.II's syntax for parameter variations");
+              }
+          }
+        return found;
+      }
+
+
+
+      /**
        * Pass 1 of Parameters::read(): only the name lists of @p input,
        * everything else skipped; checked to be unique across lists.
        */
@@ -111,8 +228,11 @@ namespace ndda
                           "static: the velocity is set to zero at the start of "
                           "every step (DDA statics); dynamic: it is carried "
                           "over; quasi-static: no inertia, every step solves "
-                          "equilibrium K d = f (every block must be "
-                          "constrained).");
+                          "equilibrium K d = f: every block must be "
+                          "held, by boundary conditions, bolts or contacts "
+                          "that touch when the run starts; a scene where a "
+                          "block can still move as a rigid body is refused "
+                          "before the run, with the block and its motion.");
         prm.declare_entry(
           "Time integrator",
           "generalized-alpha",
@@ -356,17 +476,33 @@ namespace ndda
     {
       const NameLists names = read_name_lists(input, filename);
 
-      // Pass 2: everything, strictly.
+      // Pass 2: everything, strictly; every unknown entry and subsection
+      // first, at once, each with its line (deal.II's own message names the
+      // first problem only).
       declare_parameters(prm, names);
+      const auto undeclared = input_problems(input, prm);
       try
         {
+          AssertThrow(undeclared.empty(), ExcMessage(""));
           prm.parse_input_from_string(input, "", false);
         }
       catch (const ExceptionBase &exc)
         {
+          std::string message = message_of(exc, filename);
+          if (!undeclared.empty())
+            {
+              message = std::to_string(undeclared.size()) +
+                        (undeclared.size() == 1 ? " problem" : " problems") +
+                        ": ";
+              for (unsigned int i = 0; i < undeclared.size() && i < 10; ++i)
+                message += (i > 0 ? "; " : "") + undeclared[i];
+              if (undeclared.size() > 10)
+                message +=
+                  "; and " + std::to_string(undeclared.size() - 10) + " more";
+              message += ".";
+            }
           AssertThrow(false,
-                      ExcMessage("Error in '" + filename +
-                                 "': " + message_of(exc, filename) +
+                      ExcMessage("Error in '" + filename + "': " + message +
                                  " Run 'ndda --print-parameters' for all "
                                  "entries and their allowed values; names "
                                  "of blocks, materials, loads and "
@@ -388,17 +524,61 @@ namespace ndda
       std::string base_directory =
         slash == std::string::npos ? "" : filename.substr(0, slash + 1);
 
-      control.parse_parameters(prm);
-      contact.parse_parameters(prm);
-      materials.parse_parameters(prm, names.materials);
-      geometry.parse_parameters(
-        prm, names.blocks, names.regions, materials, base_directory);
-      loads.parse_parameters(prm, names.point_loads, names.line_loads);
-      boundary_conditions.parse_parameters(prm, names.boundary_conditions);
-      bolts.parse_parameters(prm, names.bolts);
-      fracture.parse_parameters(prm);
-      output.parse_parameters(prm, scene_name);
-      postprocess.parse_parameters(prm);
+      try
+        {
+          control.parse_parameters(prm);
+          contact.parse_parameters(prm);
+          materials.parse_parameters(prm, names.materials);
+          geometry.parse_parameters(
+            prm, names.blocks, names.regions, materials, base_directory);
+          loads.parse_parameters(prm, names.point_loads, names.line_loads);
+          boundary_conditions.parse_parameters(prm, names.boundary_conditions);
+          bolts.parse_parameters(prm, names.bolts);
+          fracture.parse_parameters(prm);
+          output.parse_parameters(prm, scene_name);
+          postprocess.parse_parameters(prm);
+        }
+      catch (const ExceptionBase &exc)
+        {
+          // ParameterHandler::get_double() and friends name neither the
+          // file nor the line: "Can't convert the parameter value <1e-308>
+          // for entry <Cohesion> to a double precision variable" (the
+          // pattern accepted what strtod() calls out of range).
+          const std::string message = message_of(exc, filename);
+          const std::string tag     = "for entry <";
+          const auto        at      = message.find(tag);
+          if (message.find("Can't convert") == std::string::npos ||
+              at == std::string::npos)
+            throw;
+          const auto        name_end = message.find('>', at);
+          const std::string name =
+            message.substr(at + tag.size(), name_end - at - tag.size());
+          const auto        value_at = message.find("value <");
+          const std::string value =
+            value_at == std::string::npos ?
+              std::string() :
+              message.substr(value_at + 7,
+                             message.find('>', value_at) - value_at - 7);
+          std::istringstream lines(input);
+          std::string        line, where;
+          for (unsigned int number = 1; std::getline(lines, line); ++number)
+            {
+              line = Utilities::trim(line.substr(0, line.find('#')));
+              const auto equals = line.find('=');
+              if (line.rfind("set ", 0) == 0 && equals != std::string::npos &&
+                  Utilities::trim(line.substr(4, equals - 4)) == name &&
+                  Utilities::trim(line.substr(equals + 1)) == value)
+                where +=
+                  (where.empty() ? "line " : ", ") + std::to_string(number);
+            }
+          AssertThrow(false,
+                      ExcMessage("Error in '" + filename + "'" +
+                                 (where.empty() ? "" : ", " + where) + ": " +
+                                 message +
+                                 " Give a number between -1.7e308 and "
+                                 "1.7e308, and 0 or at least 2.3e-308 in "
+                                 "magnitude."));
+        }
       check_consistency();
     }
 

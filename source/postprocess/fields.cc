@@ -7,6 +7,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <ndda/base/atomic_file.h>
 #include <ndda/postprocess/postprocessor.h>
 #include <ndda/simulator.h>
 
@@ -183,15 +184,16 @@ namespace ndda
                                        DataOut<2>::type_cell_data);
         if (!frame.write_vtu || block_mesh.crack_edges.empty())
           return;
-        std::ofstream cracks(frame.directory + "cracks-" +
-                             Utilities::int_to_string(frame.number, 5) +
-                             ".txt");
+        AtomicFile file(frame.directory + "cracks-" +
+                        Utilities::int_to_string(frame.number, 5) + ".txt");
+        auto      &cracks = file.stream();
         cracks << "# crack faces at t = " << simulator.get_time()
                << " s: x1 y1 x2 y2 (m), one face per line\n"
                << std::setprecision(10);
         for (const auto &e : block_mesh.crack_edges)
           cracks << block_mesh.vertices[e[0]] << ' '
                  << block_mesh.vertices[e[1]] << '\n';
+        file.commit();
       }
     };
 

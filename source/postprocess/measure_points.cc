@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <ndda/base/atomic_file.h>
 #include <ndda/postprocess/measure_points.h>
 
-#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace ndda
 {
@@ -56,12 +57,14 @@ namespace ndda
 
 
     void
-    MeasurePoints::write(const std::string &file_name) const
+    MeasurePoints::write(const std::string &file_name)
     {
       const bool first = file_name != written_file;
       if (first)
         n_written = 0;
-      std::ofstream history(file_name, first ? std::ios::trunc : std::ios::app);
+      // One write of all the samples: a run killed at any moment leaves
+      // whole lines.
+      std::ostringstream history;
       if (first)
         {
           history << "# time";
@@ -83,7 +86,14 @@ namespace ndda
                       << h[s].stress[0][1];
             history << '\n';
           }
+      append_to_file(file_name, history.str(), first);
       n_written = histories.empty() ? 0 : histories[0].size();
+      if (!keep_all_samples && n_written > 1)
+        {
+          for (auto &h : histories)
+            h.erase(h.begin(), h.end() - 1);
+          n_written = 1;
+        }
     }
   } // namespace postprocess
 } // namespace ndda

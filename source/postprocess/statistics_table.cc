@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <deal.II/base/exceptions.h>
 
+#include <ndda/base/atomic_file.h>
 #include <ndda/postprocess/statistics_table.h>
 
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 
 namespace ndda
 {
@@ -159,11 +160,13 @@ namespace ndda
       AssertThrow(first || file == file_name,
                   dealii::ExcMessage("StatisticsTable: rows were written to " +
                                      file + ", not to " + file_name));
-      std::ofstream out(file_name, first ? std::ios::trunc : std::ios::app);
-      AssertThrow(out, dealii::ExcMessage("Cannot write " + file_name));
+      // One write of all the rows: a run killed at any moment leaves whole
+      // rows.
+      std::ostringstream text;
       if (first)
-        write_header(out);
-      write_rows(out);
+        write_header(text);
+      write_rows(text);
+      append_to_file(file_name, text.str(), first);
       file = file_name;
       // write() is called between steps: every row is complete.
       n_written = n_started;

@@ -4,9 +4,11 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <ndda/base/atomic_file.h>
 #include <ndda/postprocess/visualization.h>
 #include <ndda/simulator.h>
 
+#include <cstdio>
 #include <fstream>
 
 namespace ndda
@@ -41,11 +43,15 @@ namespace ndda
       if (output.write_vtu)
         {
           const std::string name = "solution-" + number + ".vtu";
-          std::ofstream     vtu(output.directory + name);
-          data_out.write_vtu(vtu);
+          // Each file appears complete or not at all (AtomicFile): the
+          // frame before the collection that names it.
+          AtomicFile vtu(output.directory + name);
+          data_out.write_vtu(vtu.stream());
+          vtu.commit();
           pvd_records.emplace_back(time, name);
-          std::ofstream pvd(output.directory + "solution.pvd");
-          DataOutBase::write_pvd_record(pvd, pvd_records);
+          AtomicFile pvd(output.directory + "solution.pvd");
+          DataOutBase::write_pvd_record(pvd.stream(), pvd_records);
+          pvd.commit();
         }
       if (output.write_hdf5)
         {
@@ -53,14 +59,22 @@ namespace ndda
           DataOutBase::DataOutFilter filter(
             DataOutBase::DataOutFilterFlags(true, true));
           data_out.write_filtered_data(filter);
+          // Written under temporary names and renamed, as AtomicFile does.
+          const auto written = [](const std::string &file) {
+            AssertThrow(std::rename((file + ".tmp").c_str(), file.c_str()) == 0,
+                        ExcMessage("Cannot rename " + file + ".tmp to " +
+                                   file));
+          };
           data_out.write_hdf5_parallel(filter,
-                                       output.directory + name,
+                                       output.directory + name + ".tmp",
                                        MPI_COMM_SELF);
+          written(output.directory + name);
           xdmf_entries.push_back(
             data_out.create_xdmf_entry(filter, name, time, MPI_COMM_SELF));
           data_out.write_xdmf_file(xdmf_entries,
-                                   output.directory + "solution.xdmf",
+                                   output.directory + "solution.xdmf.tmp",
                                    MPI_COMM_SELF);
+          written(output.directory + "solution.xdmf");
         }
       ++output_number;
     }

@@ -87,6 +87,7 @@ namespace ndda
           scene.regions           = geometry.regions;
           scene.min_angle         = geometry.min_angle;
           scene.max_cells         = geometry.max_cells;
+          scene.snap_tolerance    = geometry.snap_tolerance;
           scene.required_vertices = required_vertices(parameters);
           mesh.build(geometry::mesh_scene(scene));
         }

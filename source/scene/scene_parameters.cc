@@ -141,6 +141,18 @@ namespace ndda
         "its target number of elements. A meshed cell takes about "
         "6 kB of memory in a run (P1 with the direct solver, measured at 8e4 and 3e5 cells; P2 more); "
         "raise the limit for larger scenes on a machine that holds them.");
+      prm.declare_entry(
+        "Snapping tolerance",
+        "1e-9",
+        Patterns::Double(0., 1e-3),
+        "Relative to the scene's size (the diagonal of the bounding box of "
+        "all blocks and regions). Corners of different blocks or regions "
+        "closer than this become one point (the corner of the block or "
+        "region given first), and two blocks that overlap in a sliver "
+        "thinner than this (twice its area over its perimeter) are taken "
+        "as touching: corners computed by trigonometry lie a rounding "
+        "error off each other or off the edge they should lie on. A "
+        "thicker overlap is an error. 0: exact geometry.");
       prm.declare_entry("Minimum angle",
                         "30",
                         Patterns::Double(10., 33.),
@@ -206,9 +218,10 @@ namespace ndda
                                const std::string              &base_directory)
     {
       prm.enter_subsection("Geometry");
-      min_angle = prm.get_double("Minimum angle");
-      max_cells = prm.get_double("Maximum number of cells");
-      mesh_file = prm.get("Mesh file");
+      min_angle      = prm.get_double("Minimum angle");
+      max_cells      = prm.get_double("Maximum number of cells");
+      snap_tolerance = prm.get_double("Snapping tolerance");
+      mesh_file      = prm.get("Mesh file");
       if (!mesh_file.empty())
         {
           if (mesh_file.front() != '/')

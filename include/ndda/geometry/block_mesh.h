@@ -95,6 +95,11 @@ namespace ndda
       /// Largest number of cells the scene may need: a scene whose
       /// smallest possible mesh has more is refused before meshing.
       double max_cells = 1e6;
+      /// Snapping tolerance, relative to the scene's size (the diagonal of
+      /// the bounding box of all blocks and regions): corners of different
+      /// blocks or regions closer than it become one point, and an overlap
+      /// thinner than it is taken as touching. Zero: exact geometry.
+      double snap_tolerance = 1e-9;
     };
 
     /**

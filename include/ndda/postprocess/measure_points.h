@@ -37,6 +37,12 @@ namespace ndda
      * The measure points of a scene (Output/Measure points): material
      * points whose displacement, velocity and cell stress are recorded
      * after every step and written to measure_points.txt.
+     *
+     * The file is the history: write() appends the samples taken since
+     * the last write and then forgets all but the last sample of every
+     * point, so that a long run keeps its memory flat (a sample is 64
+     * bytes a point a step, 6.4 MB a point over 1e5 steps). A program that
+     * wants the whole history in memory asks for it with keep_all().
      */
     class MeasurePoints
     {
@@ -60,6 +66,14 @@ namespace ndda
              const dealii::Vector<double> &velocity,
              const StressField            &stresses);
 
+      /** Keep every sample in memory (get_histories()), not only those
+       * not yet written and the last one. */
+      void
+      keep_all()
+      {
+        keep_all_samples = true;
+      }
+
       /** Whether no sample has been recorded yet (and there are points). */
       bool
       waiting_for_first_sample() const
@@ -67,7 +81,11 @@ namespace ndda
         return !histories.empty() && histories[0].empty();
       }
 
-      /** The samples, one vector per point. */
+      /**
+       * The samples, one vector per point: every sample with keep_all(),
+       * otherwise the last one written and those taken since (the last
+       * sample is always back()).
+       */
       const std::vector<std::vector<MeasureSample>> &
       get_histories() const
       {
@@ -77,18 +95,20 @@ namespace ndda
       /**
        * Write the samples to the text file @p file_name: the whole file
        * the first time (or for another file), after that only the samples
-       * taken since, appended.
+       * taken since, appended. Then forget the written samples but the
+       * last (unless keep_all()).
        */
       void
-      write(const std::string &file_name) const;
+      write(const std::string &file_name);
 
     private:
       std::vector<Point<2>>                   points;
       std::vector<PointEvaluator>             evaluators;
       std::vector<std::vector<MeasureSample>> histories;
-      /// The file written last and the samples in it.
-      mutable std::string  written_file;
-      mutable unsigned int n_written = 0;
+      bool                                    keep_all_samples = false;
+      /// The file written last and the samples of histories in it.
+      std::string  written_file;
+      unsigned int n_written = 0;
     };
   } // namespace postprocess
 } // namespace ndda

@@ -52,6 +52,8 @@ namespace ndda
       double                                            min_angle;
       /// Geometry/Maximum number of cells.
       double max_cells;
+      /// Snapping tolerance, relative to the scene's size.
+      double snap_tolerance;
 
       static void
       declare_parameters(ParameterHandler               &prm,
