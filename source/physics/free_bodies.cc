@@ -225,6 +225,11 @@ namespace ndda
     std::vector<std::pair<unsigned int, double>> row;
     for (const auto &s : supports)
       {
+        // Only the rows of the held group (the others are free already).
+        const unsigned int held_body = body_of(s.dofs[0]);
+        if (held_body == numbers::invalid_unsigned_int ||
+            groups.find(held_body) != ground)
+          continue;
         row.clear();
         for (unsigned int end = 0; end < 2; ++end)
           {
@@ -243,7 +248,7 @@ namespace ndda
                                 s.direction[1] * r[0]) /
                                body.size);
           }
-        if (row.empty() || groups.find(body_of(s.dofs[0])) != ground)
+        if (row.empty())
           continue;
         for (const auto &[i, a] : row)
           for (const auto &[j, b] : row)
