@@ -19,6 +19,9 @@ namespace
         << "\n"
         << "Usage:\n"
         << "  ndda scene.prm               run the scene\n"
+        << "  ndda --resume output/<scene> continue a run from its last "
+           "checkpoint\n"
+        << "                               (Output/Checkpoint interval)\n"
         << "  ndda --validate scene.prm    check the scene (parameters, "
            "geometry,\n"
         << "                               mesh, points) and exit; writes "
@@ -85,6 +88,16 @@ main(int argc, char **argv)
                     << simulator.get_mesh().get_triangulation().n_active_cells()
                     << " cells, " << simulator.get_dof_handler().n_dofs()
                     << " degrees of freedom.\n";
+          return 0;
+        }
+      if (args[0] == "--resume")
+        {
+          if (args.size() != 2)
+            {
+              std::cerr << "ndda --resume needs one output directory.\n";
+              return 1;
+            }
+          ndda::Simulator<2>::resume(args[1])->run();
           return 0;
         }
       if (args.size() != 1 || args[0].rfind("--", 0) == 0)

@@ -2,7 +2,6 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
-#include <ndda/base/atomic_file.h>
 #include <ndda/base/stage_reporter.h>
 #include <ndda/mesh/state_transfer.h>
 #include <ndda/physics/free_bodies.h>
@@ -10,8 +9,8 @@
 #include <ndda/simulator.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 namespace ndda
 {
@@ -35,6 +34,12 @@ namespace ndda
   {
     parameters.read_file(parameter_file, prm);
     parameters_from_file = true;
+    // Kept for checkpoints: a resumed run reads the scene as it was.
+    std::ifstream      in(parameter_file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    parameter_text      = text.str();
+    parameter_file_name = std::filesystem::absolute(parameter_file).string();
   }
 
 
@@ -73,11 +78,23 @@ namespace ndda
     // A large scene says what it is doing once a stage takes more than a
     // few seconds.
     StageReporter stages(console);
-    stages.begin("checking and meshing the geometry");
-    scene::build_mesh(parameters, user_triangulation.get(), mesh);
-    scene_half_height = scene::half_height(mesh);
+    if (resume_state)
+      {
+        // The mesh as the run left it, at its initial geometry: everything
+        // found by position is found there, as in the run.
+        stages.begin("reading the checkpoint");
+        read_checkpoint_mesh();
+      }
+    else
+      {
+        stages.begin("checking and meshing the geometry");
+        scene::build_mesh(parameters, user_triangulation.get(), mesh);
+        scene_half_height = scene::half_height(mesh);
+      }
     stages.begin("numbering the unknowns");
     fem.setup_kinematics(parameters);
+    if (resume_state)
+      read_checkpoint_models();
 
     setup_dofs();
     stages.begin("constraints and the linear system");
@@ -88,7 +105,8 @@ namespace ndda
     if (parameters.contact.enabled)
       detection.initialize(parameters.contact.detection_rule,
                            contact_distances.detection);
-    if (parameters.control.analysis_type == time::AnalysisType::quasi_static)
+    if (parameters.control.analysis_type == time::AnalysisType::quasi_static &&
+        !resume_state)
       require_held_bodies(
         mesh.get_block_mesh(),
         fem.dof_map,
@@ -126,11 +144,14 @@ namespace ndda
                              kinematics.velocity);
     compute_internal_force();
     setup_automatic_kinematics();
-    promote_blocks(nullptr);
+    if (!resume_state)
+      promote_blocks(nullptr);
 
     step_controller = time::StepController(scene::step_limits(parameters));
     open_close =
       contact::OpenCloseSolver(scene::open_close_settings(parameters));
+    if (resume_state)
+      read_checkpoint_state();
     is_set_up = true;
   }
 
@@ -493,7 +514,7 @@ namespace ndda
     transfer(acceleration, new_acceleration);
     // Constraints, bolts, loads and measure points are found by position
     // on the scene's initial geometry.
-    fem.on_initial_geometry(displacement, [&]() {
+    mesh.on_initial_geometry([&]() {
       fem.setup_constraints(parameters);
       fem.bolts.set_axial_forces(bolt_forces);
       fem.setup_loads(parameters);
@@ -676,120 +697,6 @@ namespace ndda
     // The statistics of this step are recorded before a crawling run is
     // stopped.
     step_controller.check_progress(time);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::record_statistics(const double dt)
-  {
-    step_report.dt                = dt;
-    step_report.cuts              = step_controller.n_cuts();
-    step_report.open_close_cuts   = step_controller.n_open_close_cuts();
-    step_report.solver_iterations = open_close.last_solver_iterations();
-    step_report.matrix_builds     = n_matrix_rebuilds;
-    step_report.max_increment     = max_increment;
-    step_report.fracture          = fracture_check.enabled();
-    step_report.crack_events      = n_crack_events;
-    step_report.crack_limit_hit   = crack_limit_hit;
-    step_report.failing_edges     = fracture_check.n_failing_edges();
-    statistics.start_row();
-    for (const auto &postprocessor : parameters.postprocess.postprocessors)
-      postprocessor->add_statistics(*this, statistics);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::output_results()
-  {
-    SectionTimer::Scope scope(timer, "output");
-    visualization.write_frame(*this, parameters.postprocess.postprocessors);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::write_statistics()
-  {
-    statistics.write(parameters.output.directory + "statistics");
-    measure_points.write(parameters.output.directory + "measure_points.txt");
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::run()
-  {
-    if (!is_set_up)
-      setup();
-
-    // Everything is checked: only now is anything written.
-    const std::string &directory = parameters.output.directory;
-    std::filesystem::create_directories(directory);
-    log_file.open(directory + "log.txt", console);
-    if (parameters_from_file)
-      {
-        AtomicFile used(directory + "parameters.prm");
-        prm.print_parameters(used.stream(), ParameterHandler::PRM);
-        used.commit();
-      }
-
-    pcout << "ndda: scene '" << parameters.scene_name << "'\n"
-          << fem.summary() << ", output: " << directory << std::endl;
-
-    WallClock                   wall;
-    postprocess::ProgressReport progress(parameters.output.progress_interval);
-    postprocess::OutputSchedule schedule(parameters.output.interval,
-                                         parameters.control.end_time);
-    output_results();
-    // A step that takes long (many cuts, a cascade of cracks) says so.
-    StageReporter long_step(console, 10., 30., "");
-    while (!schedule.finished(time))
-      {
-        try
-          {
-            char t[32];
-            std::snprintf(t, sizeof(t), "%.6g", time);
-            long_step.begin("step " + std::to_string(step_number + 1) +
-                            " at t = " + t + " s");
-            do_time_step();
-          }
-        catch (...)
-          {
-            // Keep the rows since the last progress line: they show how
-            // the run went wrong.
-            write_statistics();
-            throw;
-          }
-        if (schedule.frame_due(time))
-          output_results();
-        if (progress.due(wall.seconds(), schedule.finished(time)))
-          {
-            progress.print(console,
-                           wall.seconds(),
-                           {step_number,
-                            time,
-                            parameters.control.end_time,
-                            step_controller.last_step_size(),
-                            step_controller.n_total_cuts()});
-            write_statistics();
-          }
-      }
-    long_step.end();
-    write_statistics();
-    pcout << "  done: " << step_number << " steps, "
-          << step_controller.n_total_cuts() << " step cuts, "
-          << n_matrix_rebuilds << " matrix builds, "
-          << fem.linear_system.n_factorizations() << " factorizations, "
-          << wall.seconds() << " s wall time" << std::endl;
-    if (pcout.is_active())
-      timer.print_summary(pcout.get_stream());
-    log_file.close();
   }
 
 

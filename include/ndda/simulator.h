@@ -56,6 +56,8 @@ namespace ndda
 {
   using namespace dealii;
 
+  class Archive;
+
   /**
    * The ndda engine: reads a scene, builds the mesh and the finite element
    * space, and runs the time loop of thesis 3.11 and 5.4. Every step:
@@ -92,6 +94,30 @@ namespace ndda
               const Triangulation<dim>     *triangulation = nullptr);
 
     ~Simulator();
+
+    /**
+     * The run whose checkpoint (Output/Checkpoint interval) is in the
+     * output directory @p directory, ready to go on from it: run() (or
+     * setup() first) reads the scene's parameters and its whole state from
+     * `checkpoint.ndda`, truncates the statistics and measure-point files
+     * to the rows they had then, and continues writing into @p directory.
+     * A resumed run ends in the same state as one that was never
+     * interrupted, bit for bit (doc/design.md, "Decisions": checkpoints).
+     */
+    static std::unique_ptr<Simulator<dim>>
+    resume(const std::string &directory);
+
+    /**
+     * Write the present state to `checkpoint.ndda` in the output directory
+     * (replacing the last one, never leaving half a file), after writing
+     * the rows of the statistics and measure points. Then set up what
+     * a resumed run sets up anew (system, factorization, neighbour list),
+     * so that this run and a resumed one go on identically. run() calls it
+     * every Output/Checkpoint interval; needs a scene read from a `.prm`
+     * file (it holds the file's text).
+     */
+    void
+    write_checkpoint();
 
     /**
      * Build the mesh, the finite element space, constraints and loads, and
@@ -402,6 +428,33 @@ namespace ndda
     /** @} */
 
   private:
+    /// The checkpoint a resumed run reads (source/simulator_checkpoint.cc).
+    struct ResumeState;
+
+    /**
+     * Write the run's state after the mesh and the block models to a
+     * checkpoint, or read it (Archive); @p vertices are the present vertex
+     * positions (read into it, not set).
+     */
+    void
+    serialize_state(Archive &ar, std::vector<Point<dim>> &vertices);
+    /** Resuming: the mesh and the block models from the checkpoint. */
+    void
+    read_checkpoint_mesh();
+    void
+    read_checkpoint_models();
+    /** Resuming, at the end of setup(): the state from the checkpoint. */
+    void
+    read_checkpoint_state();
+    /** After writing or reading a checkpoint: set up anew what depends on
+     * how the run came here (write_checkpoint()). */
+    void
+    rebuild_after_checkpoint();
+    /** Resuming, in run(): cut the statistics and measure-point files
+     * back to what they held at the checkpoint. */
+    void
+    continue_files();
+
     /**
      * Distribute the dofs and build the index caches and state vectors;
      * with @p element_matrices also every cell's element matrices on the
@@ -576,6 +629,10 @@ namespace ndda
     /// it turned: set the system up again before the next step.
     bool block_lines_stale    = false;
     bool parameters_from_file = false;
+    /// The `.prm` file's text and its absolute path, for checkpoints.
+    std::string parameter_text, parameter_file_name;
+    /// Set by resume(): the checkpoint to read.
+    std::shared_ptr<ResumeState> resume_state;
     /// The blocks' rotations in the increment of the last attempt
     /// (block_rotations()), if it computed them, for commit_step().
     std::vector<double> solved_rotation;

@@ -45,10 +45,12 @@ namespace ndda
 
 
   void
-  LogFile::open(const std::string &file_name, std::ostream &console)
+  LogFile::open(const std::string &file_name,
+                std::ostream      &console,
+                const bool         append)
   {
     close();
-    file.open(file_name);
+    file.open(file_name, append ? std::ios::app : std::ios::trunc);
     this->console   = &console;
     original_buffer = console.rdbuf();
     tee = std::make_unique<TeeBuffer>(original_buffer, file.rdbuf());

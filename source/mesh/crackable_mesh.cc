@@ -245,6 +245,7 @@ namespace ndda
   CrackableMesh::build(const geometry::BlockMesh &mesh)
   {
     check(mesh);
+    initial_vertices = mesh.vertices;
     install(geometry::BlockMesh(mesh));
   }
 
@@ -351,6 +352,11 @@ namespace ndda
     // 4. Check and rebuild.
     check(mesh);
     result.cell_block = mesh.cell_block;
+    // A copied vertex started where its origin did.
+    std::vector<Point<2>> initial(mesh.vertices.size());
+    for (unsigned int v = 0; v < initial.size(); ++v)
+      initial[v] = initial_vertices[result.vertex_origin[v]];
+    initial_vertices.swap(initial);
     install(std::move(mesh));
     return result;
   }
@@ -491,6 +497,19 @@ namespace ndda
         vertices[i] += displacement[i];
         block_mesh.vertices[i] += displacement[i];
       }
+  }
+
+
+
+  void
+  CrackableMesh::set_vertices(const std::vector<Point<2>> &positions)
+  {
+    AssertDimension(positions.size(), triangulation.n_vertices());
+    // As move_vertices() does, through the triangulation's own vector.
+    auto &vertices =
+      const_cast<std::vector<Point<2>> &>(triangulation.get_vertices());
+    vertices            = positions;
+    block_mesh.vertices = positions;
   }
 
 

@@ -582,6 +582,14 @@ namespace ndda
 
 
   void
+  LinearSolver::forget_factorization()
+  {
+    implementation = std::make_unique<Implementation>();
+  }
+
+
+
+  void
   LinearSolver::factorize(const SparseMatrix<double> &matrix)
   {
     ++factorization_count;

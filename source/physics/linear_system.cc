@@ -732,4 +732,16 @@ namespace ndda
     base_factorized  = false;
     refactorize_next = false;
   }
+
+
+
+  void
+  LinearSystem::drop_factorization()
+  {
+    invalidate();
+    reuse_spent  = 0;
+    reuse_fewest = numbers::invalid_unsigned_int;
+    if (linear_solver)
+      linear_solver->forget_factorization();
+  }
 } // namespace ndda

@@ -41,6 +41,19 @@ namespace ndda
                         "2",
                         Patterns::Double(0.),
                         "Wall-clock seconds between progress lines.");
+      prm.declare_entry(
+        "Checkpoint interval",
+        "0",
+        Patterns::Double(0.),
+        "Simulated time between checkpoints (s); 0: none. A checkpoint "
+        "(checkpoint.ndda in the output directory, replaced each time) "
+        "holds the whole state after a step, and one is written at the end "
+        "of the run too; 'ndda --resume <output directory>' continues the "
+        "run from it and ends in the same state, bit for bit, as the run "
+        "would have without the interruption. Writing one starts the next "
+        "step with a fresh factorization and neighbour list, so results "
+        "differ from a run without checkpoints within the solver "
+        "tolerance.");
       prm.leave_subsection();
     }
 
@@ -61,7 +74,8 @@ namespace ndda
       write_hdf5 = prm.get_bool("Write hdf5");
       measure_points =
         parse_points(prm.get("Measure points"), "Output/Measure points");
-      progress_interval = prm.get_double("Progress interval");
+      progress_interval   = prm.get_double("Progress interval");
+      checkpoint_interval = prm.get_double("Checkpoint interval");
       prm.leave_subsection();
     }
   } // namespace parameters

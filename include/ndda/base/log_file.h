@@ -22,9 +22,12 @@ namespace ndda
   public:
     ~LogFile();
 
-    /** Copy @p console into the file @p file_name from now on. */
+    /** Copy @p console into the file @p file_name from now on (after
+     * what it holds, with @p append). */
     void
-    open(const std::string &file_name, std::ostream &console);
+    open(const std::string &file_name,
+         std::ostream      &console,
+         const bool         append = false);
 
     /** Flush, and write @p console to its own buffer again. */
     void

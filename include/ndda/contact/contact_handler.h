@@ -283,6 +283,33 @@ namespace ndda
       trial_end_forces(const dealii::Vector<double> &d,
                        dealii::Vector<double>       &force) const;
 
+      /**
+       * Write what the contacts carry from step to step to a checkpoint, or
+       * read it (Archive): the memory of the last step's contacts, the
+       * normal stiffness (raised by the automatic penalty), the blocks'
+       * mean edge lengths, the statistics that accumulate, and the spring
+       * forces at the end of the last step. The edges and the rest are set
+       * up from the mesh as at the start.
+       */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &settings.normal_stiffness &block_edge_length &memory &open_last_step
+          &statistics &first_step &one_way &end_force;
+      }
+
+      /**
+       * Forget the neighbour list of the broad phase: the next step builds
+       * it anew, as a run resumed from a checkpoint must (the list's
+       * contents depend on when it was built).
+       */
+      void
+      forget_neighbours()
+      {
+        neighbours.clear();
+      }
+
 
     private:
       /**
@@ -350,6 +377,13 @@ namespace ndda
         int    sign;
         double offset;
         bool   bonded;
+
+        template <class Archive>
+        void
+        serialize(Archive &ar)
+        {
+          ar &state &anchor &sign &offset &bonded;
+        }
       };
 
       /** A (vertex, boundary edge) pair. */

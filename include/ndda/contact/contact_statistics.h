@@ -37,6 +37,16 @@ namespace ndda
       /// step (ContactLaw::friction_dissipation()). The rest of the
       /// dissipation is what the integrator's contact switching took.
       double friction_dissipation = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &n_candidates &n_contacts &n_closed &n_sliding &n_vertex_springs
+          &n_vertex_vertex &n_iterations &n_bonded &bonded_length
+            &max_penetration &spring_energy &contact_work &dissipation
+              &friction_dissipation;
+      }
     };
   } // namespace contact
 } // namespace ndda

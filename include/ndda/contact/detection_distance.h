@@ -123,6 +123,15 @@ namespace ndda
         return widenings;
       }
 
+      /** Write the distance's state to a checkpoint or read it (Archive). */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &rule &full &distance &motion &last_dt &last_increment &last_depth
+          &have_step &widenings;
+      }
+
     private:
       Rule   rule     = Rule::scene;
       double full     = 0;

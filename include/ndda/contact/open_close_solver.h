@@ -73,6 +73,15 @@ namespace ndda
         return solver_iterations;
       }
 
+      /** Write the statistics of the last solve to a checkpoint or read
+       * them (Archive). */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &solver_iterations;
+      }
+
     private:
       Settings     settings;
       unsigned int solver_iterations = 0;

@@ -112,6 +112,13 @@ namespace ndda
         return find(k) != nullptr;
       }
 
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &entries &start;
+      }
+
     private:
       std::vector<std::pair<ContactKey, Value>> entries;
       /// The entries of first index v are [start[v], start[v + 1]).

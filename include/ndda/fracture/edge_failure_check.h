@@ -27,6 +27,13 @@ namespace ndda
       FailureMode      mode = FailureMode::none;
       double           time = 0;
       dealii::Point<2> location;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &mode &time &location;
+      }
     };
 
     /**
@@ -107,6 +114,15 @@ namespace ndda
       first_failure() const
       {
         return first;
+      }
+
+      /** Write the first failure and the last check's count to a
+       * checkpoint or read them (Archive); the edges come from setup(). */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &first &n_failing;
       }
 
     private:

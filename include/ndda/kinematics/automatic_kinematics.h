@@ -209,6 +209,16 @@ namespace ndda
         return n_demoted;
       }
 
+      /** Write what the blocks went through (cracks, unloaded steps,
+       * promotions and demotions) to a checkpoint or read it (Archive),
+       * after setup(). */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &block_cracked &cell_cracked &unloaded_steps &n_promoted &n_demoted;
+      }
+
     private:
       /**
        * Whether a stress of each auto block that is meshed (@p of_meshed)

@@ -229,6 +229,57 @@ namespace ndda
     void
     move_vertices(const std::vector<Tensor<1, 2>> &displacement);
 
+    /** Put every vertex at the given position, exactly. */
+    void
+    set_vertices(const std::vector<Point<2>> &vertices);
+
+    /**
+     * The position of every vertex when the scene was built (a vertex that
+     * a crack created: that of the vertex it was copied from).
+     */
+    const std::vector<Point<2>> &
+    get_initial_vertices() const
+    {
+      return initial_vertices;
+    }
+
+    /**
+     * Call @p setup with every vertex at its initial position, then put
+     * them back where they are, exactly: what is found by position in the
+     * `.prm` (constraints, loads, bolts, measure points) is found on the
+     * scene's initial geometry, the same after any crack and any restart.
+     */
+    template <typename Function>
+    void
+    on_initial_geometry(const Function &setup)
+    {
+      const std::vector<Point<2>> present = block_mesh.vertices;
+      set_vertices(initial_vertices);
+      setup();
+      set_vertices(present);
+    }
+
+    /**
+     * Write the mesh to a checkpoint, or read it from one (Archive): its
+     * cells, blocks, crack faces and initial vertex positions. A mesh read
+     * stands at its initial geometry; the present positions are the
+     * caller's state (set_vertices()).
+     */
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar &block_mesh.triangles &block_mesh.cell_block &block_mesh
+        .cell_material &block_mesh.block_names &block_mesh
+        .crack_edges                           &initial_vertices;
+      if (ar.loading())
+        {
+          geometry::BlockMesh mesh = block_mesh;
+          mesh.vertices            = initial_vertices;
+          install(std::move(mesh));
+        }
+    }
+
     /**
      * Whether moving the vertices by @p displacement would turn a cell
      * inside out (or flat): the sign of its area changes.
@@ -280,6 +331,8 @@ namespace ndda
     /// Keys (smaller vertex << 32 | larger vertex) of the edges in
     /// block_mesh.crack_edges, sorted.
     std::vector<std::uint64_t> crack_keys;
+    /// See get_initial_vertices().
+    std::vector<Point<2>> initial_vertices;
   };
 
   /**

@@ -226,6 +226,15 @@ namespace ndda
     void
     turn(const ArrayView<const index> &dofs, FullMatrix<double> &k) const;
 
+    /** Write the cells' frame angles to a checkpoint or read them
+     * (Archive); setup() follows. */
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar &angle;
+    }
+
   private:
     /** Refresh the nodes' cos and sin from the cells' angles. */
     void

@@ -91,6 +91,15 @@ namespace ndda
       return dofs;
     }
 
+    /** Write the bolts (anchors, forces) to a checkpoint or read them
+     * (Archive). */
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar &bolts;
+    }
+
   private:
     struct Spring
     {
@@ -100,6 +109,13 @@ namespace ndda
       double               pretension;
       /// Spring force k * elongation, accumulated (N, tension positive).
       double axial_force = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &dofs &first &second &stiffness &pretension &axial_force;
+      }
     };
 
     /** The unit vector from the second anchor to the first, displaced. */

@@ -76,7 +76,28 @@ namespace ndda
       /// Area at the first computation: the density is scaled by
       /// initial_area / area so that the mass of a cell never changes.
       double initial_area = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &stiffness &mass &viscosity_over_density &gradient &weight &vertices
+          &vertex_indices &reference_inverse &frame_angle &diameter
+            &initial_area;
+      }
     };
+
+    /**
+     * Write the cells' data to a checkpoint or read them (Archive): a cell
+     * keeps the matrices of its last computation until it moves beyond
+     * the tolerance, so they are state, not something to recompute.
+     */
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar &data &tangents &computed_cells;
+    }
 
     /**
      * The quadratures of the element (Element::cell_quadrature and

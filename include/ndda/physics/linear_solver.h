@@ -99,6 +99,14 @@ namespace ndda
     unsigned int
     reuse_limit(const unsigned int min_iterations) const;
 
+    /**
+     * Forget the factorization, its symbolic analysis and the GMRES
+     * storage: the next solve factorizes anew, as a process that never had
+     * one does (a run resumed from a checkpoint).
+     */
+    void
+    forget_factorization();
+
     /** Number of factorizations so far. */
     unsigned int
     n_factorizations() const

@@ -187,6 +187,15 @@ namespace ndda
     void
     invalidate();
 
+    /**
+     * invalidate(), and forget everything the factorization carries from
+     * solve to solve (its reuse as a preconditioner, its symbolic
+     * analysis): the next solve is the one a process that resumes from a
+     * checkpoint makes.
+     */
+    void
+    drop_factorization();
+
     const SparseMatrix<double> &
     get_mass_matrix() const
     {

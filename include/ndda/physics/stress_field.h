@@ -143,6 +143,14 @@ namespace ndda
     std::pair<double, double>
     cell_rotation(const unsigned int cell, const Vector<double> &d) const;
 
+    /** Write the stresses to a checkpoint or read them (Archive). */
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar &stress;
+    }
+
   private:
     /** Whether the increment @p d moves any node of cell @p c. */
     bool

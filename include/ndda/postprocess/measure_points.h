@@ -29,6 +29,13 @@ namespace ndda
     dealii::Tensor<1, 2>          displacement;
     dealii::Tensor<1, 2>          velocity;
     dealii::SymmetricTensor<2, 2> stress;
+
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar &time &displacement &velocity &stress;
+    }
   };
 
   namespace postprocess
@@ -100,6 +107,21 @@ namespace ndda
        */
       void
       write(const std::string &file_name);
+
+      /**
+       * Write the samples and what has been written to a checkpoint, or
+       * read them (Archive); the file is @p file_name now (the output
+       * directory may have another name when the run resumes).
+       */
+      template <class Archive>
+      void
+      serialize(Archive &ar, const std::string &file_name)
+      {
+        bool                      written = !written_file.empty();
+        ar &histories &n_written &written;
+        if (ar.loading())
+          written_file = written ? file_name : "";
+      }
 
     private:
       std::vector<Point<2>>                   points;

@@ -30,6 +30,8 @@ namespace ndda
       bool                  write_hdf5;
       std::vector<Point<2>> measure_points;
       double                progress_interval;
+      /// Simulated time between checkpoints (s); 0: none.
+      double checkpoint_interval;
 
       static void
       declare_parameters(ParameterHandler &prm);

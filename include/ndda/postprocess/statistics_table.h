@@ -80,6 +80,21 @@ namespace ndda
       void
       write_text(std::ostream &out) const;
 
+      /**
+       * Write the table's columns and count of rows to a checkpoint, or
+       * read them (Archive); the file is @p file_name now (the output
+       * directory may have another name when the run resumes).
+       */
+      template <class Archive>
+      void
+      serialize(Archive &ar, const std::string &file_name)
+      {
+        bool                                            written = !file.empty();
+        ar &columns &last_column &n_started &n_written &written;
+        if (ar.loading())
+          file = written ? file_name : "";
+      }
+
     private:
       struct Column
       {
@@ -88,6 +103,13 @@ namespace ndda
         bool                scientific = false;
         unsigned int        precision  = 4;
         std::vector<double> values;
+
+        template <class Archive>
+        void
+        serialize(Archive &ar)
+        {
+          ar &name &integer &scientific &precision &values;
+        }
       };
 
       void

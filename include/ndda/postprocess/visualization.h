@@ -42,6 +42,15 @@ namespace ndda
         return output_number;
       }
 
+      /** Write the frames written so far (number, collections) to a
+       * checkpoint or read them (Archive). */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &output_number &pvd_records &xdmf_entries;
+      }
+
     private:
       unsigned int                                output_number = 0;
       std::vector<std::pair<double, std::string>> pvd_records;

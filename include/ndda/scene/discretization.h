@@ -67,7 +67,7 @@ namespace ndda
 
       /**
        * Constraints and bolts, found by position on the present geometry
-       * (the scene's initial geometry: on_initial_geometry()).
+       * (the scene's initial geometry: CrackableMesh::on_initial_geometry()).
        */
       void
       setup_constraints(const parameters::Parameters &parameters);
@@ -180,26 +180,6 @@ namespace ndda
       external_force(const double          t,
                      const Vector<double> &displacement,
                      Vector<double>       &force) const;
-
-      /**
-       * Call @p setup with the mesh moved back by @p displacement to the
-       * scene's initial geometry (where constraints, loads and measure
-       * points are found by position), then move it forward again.
-       */
-      template <typename Function>
-      void
-      on_initial_geometry(const Vector<double> &displacement,
-                          const Function       &setup)
-      {
-        auto u = dof_map.vertex_values(displacement);
-        for (auto &x : u)
-          x *= -1.;
-        mesh.move_vertices(u);
-        setup();
-        for (auto &x : u)
-          x *= -1.;
-        mesh.move_vertices(u);
-      }
 
       /** Whether each cell belongs to a meshed block (the cells that may
        * crack). */

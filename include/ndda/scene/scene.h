@@ -86,6 +86,13 @@ namespace ndda
       double detection = 0;
       /// The largest penetration an accepted step may leave.
       double penetration_tolerance = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &detection &penetration_tolerance;
+      }
     };
 
     /**

@@ -137,6 +137,16 @@ namespace ndda
         return last_dt;
       }
 
+      /** Write the controller's state (not its limits, which come from
+       * the `.prm`) to a checkpoint or read it (Archive). */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &step_size &last_dt &step &start_time &cuts &open_close_cuts &raises
+          &total_cuts &crawling_steps &hold &held &growing;
+      }
+
     private:
       /** "Step N at t = T: " for messages. */
       std::string
