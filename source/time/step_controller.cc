@@ -72,7 +72,8 @@ namespace ndda
                                   const double        dt,
                                   const double        max_increment)
     {
-      Assert(result != AttemptResult::detect_again, ExcInternalError());
+      Assert(result != AttemptResult::detect_again,
+             dealii::ExcInternalError());
       if (result == AttemptResult::penalty_raised)
         {
           ++raises;
