@@ -330,14 +330,29 @@ namespace ndda
             cb(r, j) = block.rows[r][0] * block.basis(2 * node, j) +
                        block.rows[r][1] * block.basis(2 * node + 1, j);
         }
+      // A block without constraint rows has C B empty: its normal matrix is
+      // zero (all of its unknowns free) and it has no particular part. The
+      // products are skipped, not made of empty matrices, which FullMatrix
+      // refuses in Debug builds.
       FullMatrix<double> normal(k, k);
-      cb.Tmmult(normal, cb);
+      if (!block.rows.empty())
+        cb.Tmmult(normal, cb);
       auto [inverse, null_space] = pseudo_inverse(normal);
       block.particular.reinit(k, block.rows.size());
-      inverse.mTmult(block.particular, cb);
+      if (!block.rows.empty())
+        inverse.mTmult(block.particular, cb);
 
       // B N, its masters and the lines: coefficients = B N (B N)_M^-1.
       const unsigned int m = null_space.n();
+      if (m == 0)
+        {
+          // The constraints fix every unknown of the block: no masters, and
+          // every dof is a line without entries. (The products below would
+          // be of empty matrices, which FullMatrix refuses in Debug builds.)
+          block.masters.clear();
+          block.coefficients.reinit(0, 0);
+          return;
+        }
       FullMatrix<double> bn(block.basis.m(), m);
       block.basis.mmult(bn, null_space);
       block.masters = pivot_rows(bn, m);
