@@ -72,8 +72,7 @@ namespace ndda
                                   const double        dt,
                                   const double        max_increment)
     {
-      Assert(result != AttemptResult::detect_again,
-             dealii::ExcInternalError());
+      Assert(result != AttemptResult::detect_again, dealii::ExcInternalError());
       if (result == AttemptResult::penalty_raised)
         {
           ++raises;

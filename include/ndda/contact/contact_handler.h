@@ -283,14 +283,9 @@ namespace ndda
       trial_end_forces(const dealii::Vector<double> &d,
                        dealii::Vector<double>       &force) const;
 
-      /**
-       * Write what the contacts carry from step to step to a checkpoint, or
-       * read it (Archive): the memory of the last step's contacts, the
-       * normal stiffness (raised by the automatic penalty), the blocks'
-       * mean edge lengths, the statistics that accumulate, and the spring
-       * forces at the end of the last step. The edges and the rest are set
-       * up from the mesh as at the start.
-       */
+      /** Write what the contacts carry from step to step (memory, normal
+       * stiffness, edge lengths, statistics, end forces) to a checkpoint,
+       * or read it (Archive); the rest is set up from the mesh. */
       template <class Archive>
       void
       serialize(Archive &ar)
@@ -299,11 +294,8 @@ namespace ndda
           &statistics &first_step &one_way &end_force;
       }
 
-      /**
-       * Forget the neighbour list of the broad phase: the next step builds
-       * it anew, as a run resumed from a checkpoint must (the list's
-       * contents depend on when it was built).
-       */
+      /** Forget the broad phase's neighbour list (its contents depend on
+       * when it was built): the next step builds it, as a resumed run. */
       void
       forget_neighbours()
       {
