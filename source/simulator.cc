@@ -121,7 +121,8 @@ namespace ndda
     stages.begin("fracture, loads and measure points");
     fracture_check.setup(mesh,
                          fem.cell_material,
-                         scene::material_strengths(parameters.materials),
+                         ndda::parameters::material_strengths(
+                           parameters.materials),
                          fem.meshed_cells());
     fem.setup_loads(parameters);
     fem.check_expressions(parameters);
@@ -527,7 +528,8 @@ namespace ndda
       contacts.carry_memory_from(old_contacts);
     fracture_check.setup(mesh,
                          fem.cell_material,
-                         scene::material_strengths(parameters.materials),
+                         ndda::parameters::material_strengths(
+                           parameters.materials),
                          fem.meshed_cells());
 
     // A crack changes no cell's shape (cells keep their index, vertex

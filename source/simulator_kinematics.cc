@@ -15,7 +15,8 @@ namespace ndda
   void
   Simulator<dim>::setup_automatic_kinematics()
   {
-    const auto strengths = scene::material_strengths(parameters.materials);
+    const auto strengths =
+      ndda::parameters::material_strengths(parameters.materials);
     std::vector<std::optional<fracture::Strength>> cell_strength;
     for (const unsigned int m : fem.cell_material)
       cell_strength.push_back(strengths[m]);
@@ -121,7 +122,8 @@ namespace ndda
       }
     fracture_check.setup(mesh,
                          fem.cell_material,
-                         scene::material_strengths(parameters.materials),
+                         ndda::parameters::material_strengths(
+                           parameters.materials),
                          fem.meshed_cells());
     if (at_start)
       return;

@@ -502,6 +502,56 @@ namespace
 
 
 
+  // A zero strength makes every failure time 0: the excess starts at 0 and
+  // grows with the load, so the earliest failure is the step's start for
+  // every edge that fails at all (and the whole block cracks in the first
+  // event). The criteria name such a material so that the parameters can
+  // refuse it.
+  void
+  test_zero_strength()
+  {
+    std::cout << "Zero strength" << std::endl;
+    const double s = 1e6;
+    Strength     no_cohesion;
+    no_cohesion.friction_angle   = 30. * numbers::PI / 180.;
+    no_cohesion.tensile_strength = s;
+    const MohrCoulomb coulomb;
+    EdgeState         start, end;
+    // A small shear with a compression it exceeds: fails at the start.
+    end.shear_stress  = 1e-3 * s;
+    end.normal_stress = -1e-4 * s;
+    check_failure("c = 0, slight shear",
+                  coulomb.failure_in_step(start, end, no_cohesion),
+                  FailureMode::shear,
+                  0.);
+    const std::string reason = coulomb.fails_under_any_load(no_cohesion);
+    std::cout << "  Mohr-Coulomb, c = 0: " << reason << std::endl;
+    check(reason.find("Cohesion is 0") != std::string::npos,
+          "Mohr-Coulomb names c = 0");
+
+    Strength no_tension         = no_cohesion;
+    no_tension.cohesion         = s;
+    no_tension.tensile_strength = 0.;
+    check(coulomb.fails_under_any_load(no_tension)
+              .find("Tensile strength is 0") != std::string::npos,
+          "Mohr-Coulomb with cut-off names T = 0");
+    check(MohrCoulomb(false).fails_under_any_load(no_tension).empty(),
+          "Mohr-Coulomb without cut-off accepts T = 0 (c > 0)");
+    check(MaximumPrincipalStress()
+              .fails_under_any_load(no_tension)
+              .find("Tensile strength is 0") != std::string::npos,
+          "maximum principal stress names T = 0");
+    check(MaximumPrincipalStress().fails_under_any_load(no_cohesion).empty(),
+          "maximum principal stress ignores c");
+
+    Strength positive         = no_tension;
+    positive.tensile_strength = 1.;
+    check(coulomb.fails_under_any_load(positive).empty(),
+          "Mohr-Coulomb accepts c, T > 0");
+  }
+
+
+
   void
   test_registry()
   {
@@ -596,6 +646,7 @@ main()
   test_edge_stresses();
   test_mohr_coulomb();
   test_maximum_principal_stress();
+  test_zero_strength();
   test_registry();
   std::cout << "OK" << std::endl;
   return 0;

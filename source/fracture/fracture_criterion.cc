@@ -62,6 +62,14 @@ namespace ndda
 
 
 
+    std::string
+    FractureCriterion::fails_under_any_load(const Strength &) const
+    {
+      return "";
+    }
+
+
+
     void
     register_fracture_criterion(const std::string &name,
                                 const std::string &description,

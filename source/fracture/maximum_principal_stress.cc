@@ -42,6 +42,19 @@ namespace ndda
 
 
 
+    std::string
+    MaximumPrincipalStress::fails_under_any_load(const Strength &strength) const
+    {
+      if (strength.tensile_strength <= 0.)
+        return "Tensile strength is 0: under Fracture/Criterion = Maximum "
+               "principal stress every edge with a tensile principal stress "
+               "fails at the first instant and the block falls apart in the "
+               "first step";
+      return "";
+    }
+
+
+
     NDDA_REGISTER_FRACTURE_CRITERION(
       MaximumPrincipalStress,
       "Maximum principal stress",

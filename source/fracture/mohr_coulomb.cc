@@ -72,6 +72,27 @@ namespace ndda
 
 
 
+    std::string
+    MohrCoulomb::fails_under_any_load(const Strength &strength) const
+    {
+      // With c = 0 the Coulomb excess |tau| + sigma_n tan(phi) is
+      // homogeneous in the stress: an edge that fails at all within a step
+      // fails at its start. Only a pure pressure on every edge (a
+      // hydrostatic state) escapes.
+      if (strength.cohesion <= 0.)
+        return "Cohesion is 0: under Fracture/Criterion = Mohr-Coulomb an "
+               "edge without cohesion fails in shear under any shear "
+               "stress, so every loaded edge fails at the first instant and "
+               "the block falls apart into its cells in the first step";
+      if (tension_cut_off && strength.tensile_strength <= 0.)
+        return "Tensile strength is 0: with Fracture/Mohr-Coulomb/Tension "
+               "cut-off = true every edge in tension fails at the first "
+               "instant and the block falls apart in the first step";
+      return "";
+    }
+
+
+
     NDDA_REGISTER_FRACTURE_CRITERION(
       MohrCoulomb,
       "Mohr-Coulomb",

@@ -604,12 +604,51 @@ namespace ndda
                    " subdivisions per cell)") +
               ". Set 'Write hdf5 = false' or use degree 1."));
         }
+      // Only splitting turns a zero strength into a block that falls
+      // apart; 'Split edges = false' counts the failing edges.
+      if (fracture.criterion && fracture.split_edges)
+        {
+          const auto strengths = material_strengths(materials);
+          for (unsigned int m = 0; m < strengths.size(); ++m)
+            if (strengths[m])
+              {
+                const std::string problem =
+                  fracture.criterion->fails_under_any_load(*strengths[m]);
+                AssertThrow(problem.empty(),
+                            ExcMessage("Materials/" +
+                                       materials.materials[m].name + ": " +
+                                       problem +
+                                       ". Give it a strength above zero, or "
+                                       "'Fracture = false' if it must not "
+                                       "crack."));
+              }
+        }
       AssertThrow(control.time_step <= control.end_time,
                   ExcMessage(
                     "Control/Time step: " + std::to_string(control.time_step) +
                     " is larger than Control/End time " +
                     std::to_string(control.end_time) +
                     ". Make the step smaller than the end time."));
+    }
+
+
+
+    std::vector<std::optional<fracture::Strength>>
+    material_strengths(const Materials &materials)
+    {
+      std::vector<std::optional<fracture::Strength>> strengths;
+      for (const auto &m : materials.materials)
+        {
+          strengths.emplace_back();
+          if (!m.fracture)
+            continue;
+          fracture::Strength s;
+          s.cohesion         = m.cohesion;
+          s.friction_angle   = m.friction_angle * numbers::PI / 180.;
+          s.tensile_strength = m.tensile_strength;
+          strengths.back()   = s;
+        }
+      return strengths;
     }
 
 

@@ -242,26 +242,6 @@ namespace ndda
 
 
 
-    std::vector<std::optional<fracture::Strength>>
-    material_strengths(const parameters::Materials &materials)
-    {
-      std::vector<std::optional<fracture::Strength>> strengths;
-      for (const auto &m : materials.materials)
-        {
-          strengths.emplace_back();
-          if (!m.fracture)
-            continue;
-          fracture::Strength s;
-          s.cohesion         = m.cohesion;
-          s.friction_angle   = m.friction_angle * numbers::PI / 180.;
-          s.tensile_strength = m.tensile_strength;
-          strengths.back()   = s;
-        }
-      return strengths;
-    }
-
-
-
     time::StepController::Limits
     step_limits(const parameters::Parameters &parameters)
     {

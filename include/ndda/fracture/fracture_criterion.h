@@ -125,6 +125,19 @@ namespace ndda
                       const EdgeState &end,
                       const Strength  &strength) const = 0;
 
+      /**
+       * Why a material of @p strength would fail under (almost) any load
+       * from its first instant, or an empty string if it would not. A
+       * criterion whose limit is zero at zero stress (no cohesion, no
+       * tensile strength) makes the failure time of every loaded edge 0
+       * (limit_crossing_time() of an excess that starts at 0), so the
+       * first crack event splits all of them at once and the block falls
+       * apart into its cells in step 1; the parameters refuse such a
+       * material before the run. The default finds nothing.
+       */
+      virtual std::string
+      fails_under_any_load(const Strength &strength) const;
+
       /** For messages (PluginRegistry). */
       static const char *
       plugin_kind()

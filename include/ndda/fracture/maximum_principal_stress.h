@@ -39,6 +39,9 @@ namespace ndda
       failure_in_step(const EdgeState &start,
                       const EdgeState &end,
                       const Strength  &strength) const override;
+
+      std::string
+      fails_under_any_load(const Strength &strength) const override;
     };
 
     /**

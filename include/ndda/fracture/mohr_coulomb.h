@@ -53,6 +53,9 @@ namespace ndda
                       const EdgeState &end,
                       const Strength  &strength) const override;
 
+      std::string
+      fails_under_any_load(const Strength &strength) const override;
+
     private:
       bool tension_cut_off;
     };

@@ -17,6 +17,7 @@
 #include <ndda/time/time_integrator.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -130,11 +131,20 @@ namespace ndda
 
       /**
        * Check what no single section can: HDF5 output with the element's
-       * subdivisions, the time step against the end time.
+       * subdivisions, the time step against the end time, a fracturing
+       * material whose strength the criterion finds zero
+       * (FractureCriterion::fails_under_any_load()).
        */
       void
       check_consistency() const;
     };
+
+    /**
+     * The strength of each material for the fracture check (friction
+     * angle in radians), unset for materials that do not fracture.
+     */
+    std::vector<std::optional<fracture::Strength>>
+    material_strengths(const Materials &materials);
 
   } // namespace parameters
 } // namespace ndda

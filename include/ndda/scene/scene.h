@@ -111,13 +111,6 @@ namespace ndda
                    const double                     length,
                    contact::ContactHandler         &contacts);
 
-    /**
-     * The strength of each material for the fracture check (friction
-     * angle in radians), unset for materials that do not fracture.
-     */
-    std::vector<std::optional<fracture::Strength>>
-    material_strengths(const parameters::Materials &materials);
-
     /** The step controller's limits (Control and Contact sections). */
     time::StepController::Limits
     step_limits(const parameters::Parameters &parameters);
