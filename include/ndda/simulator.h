@@ -206,6 +206,13 @@ namespace ndda
       return stresses[cell];
     }
 
+    /** The stresses at the quadrature points of every active cell. */
+    const StressField &
+    get_stresses() const
+    {
+      return stresses;
+    }
+
     /** Area-weighted mean stress of the active cell @p cell. */
     SymmetricTensor<2, dim>
     mean_cell_stress(const unsigned int cell) const

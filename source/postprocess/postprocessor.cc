@@ -5,6 +5,8 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/numerics/data_out.h>
+
 #include <ndda/postprocess/postprocessor.h>
 
 namespace ndda
@@ -20,6 +22,8 @@ namespace ndda
     link_plugin_VelocityField();
     void
     link_plugin_StressFields();
+    void
+    link_plugin_NodalStressFields();
     void
     link_plugin_BlockAndMaterial();
     void
@@ -39,12 +43,20 @@ namespace ndda
     void
     link_plugin_BlockForces();
 
+    Frame::~Frame()
+    {
+      data_out.clear();
+    }
+
+
+
     void
     Postprocessor::link_builtin_plugins()
     {
       link_plugin_DisplacementField();
       link_plugin_VelocityField();
       link_plugin_StressFields();
+      link_plugin_NodalStressFields();
       link_plugin_BlockAndMaterial();
       link_plugin_CrackFaces();
       link_plugin_TimeStepStatistics();
@@ -99,7 +111,8 @@ namespace ndda
       /// The default selection: everything ndda writes, in the order of
       /// the VTU fields and the statistics columns.
       const char *default_list =
-        "displacement, velocity, stress, block and material, crack faces, "
+        "displacement, velocity, stress, nodal stress, block and material, "
+        "crack faces, "
         "kinematics, time step, energy, fracture, contact, block forces";
     } // namespace
 

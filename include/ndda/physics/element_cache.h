@@ -182,6 +182,20 @@ namespace ndda
       return n_q_points;
     }
 
+    /** The cell quadrature: the stresses live at its points. */
+    const Quadrature<dim> &
+    get_quadrature() const
+    {
+      return quadrature;
+    }
+
+    /** The quadrature of the consistent mass. */
+    const Quadrature<dim> &
+    get_mass_quadrature() const
+    {
+      return mass_quadrature;
+    }
+
     /** The cells whose data the last call to update() computed. */
     const std::vector<unsigned int> &
     get_computed_cells() const

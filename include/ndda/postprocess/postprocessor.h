@@ -52,6 +52,9 @@ namespace ndda
         , directory(directory)
       {}
 
+      /** Release the data before what the frame keeps alive goes. */
+      ~Frame();
+
       dealii::DataOut<2, 2> &data_out;
       /// Output number of the frame (solution-NNNNN).
       unsigned int number;
@@ -69,8 +72,22 @@ namespace ndda
         return storage.back();
       }
 
+      /**
+       * Keep @p object (a DoFHandler of a field and its vectors) as long
+       * as the frame.
+       */
+      template <class T>
+      T &
+      keep(std::unique_ptr<T> object)
+      {
+        T &kept = *object;
+        objects.emplace_back(std::move(object));
+        return kept;
+      }
+
     private:
       std::deque<dealii::Vector<double>> storage;
+      std::deque<std::shared_ptr<void>>  objects;
     };
 
     /**
