@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
-"""A run killed with SIGKILL at random moments leaves only complete files.
+"""A run killed with SIGKILL at random moments leaves only complete files
+(but for the last line of the two streamed files, which may be cut).
 
     kill_at_random.py NDDA SCENE.prm WORK_DIR [--kills N] [--seed S]
 
@@ -12,9 +13,11 @@ statistics and the measure points in one write each):
 
 - every .vtu file ends with its closing tag, and so does solution.pvd,
   whose every frame exists;
-- the statistics and measure-point files end with a line break, and every
-  row they hold is the reference run's row (the runs are deterministic):
-  a cut row, or a row from a corrupted buffer, differs;
+- every row the statistics and measure-point files hold is the reference
+  run's row (the runs are deterministic); the last one may be cut (they
+  are appended with one write(), which Linux may stop at a page boundary
+  when SIGKILL arrives) and must then be the start of the reference's
+  row; a row from a corrupted buffer differs;
 - parameters.prm is the reference's.
 
 Leftover `.tmp` files are allowed (a kill during a write leaves one; the
@@ -51,8 +54,9 @@ def read(path):
         return f.read()
 
 
-def faults_of(out, reference):
-    """What is incomplete in the output directory out."""
+def faults_of(out, reference, cut_last_lines):
+    """What is incomplete in the output directory out; the streamed files
+    whose last line is cut go to cut_last_lines."""
     faults = []
     names = sorted(os.listdir(out))
     for name in names:
@@ -69,8 +73,12 @@ def faults_of(out, reference):
                 if not os.path.exists(os.path.join(out, frame)):
                     faults.append("solution.pvd names %s, which is missing" % frame)
         if name in ("statistics", "measure_points.txt"):
+            # Appended in one write(), which Linux may stop at a page
+            # boundary when SIGKILL arrives (a 256 MB write killed after
+            # 1.5 s left 14 MB): the last line may be cut, and must then
+            # be the start of the complete run's line (checked below).
             if data and not data.endswith(b"\n"):
-                faults.append("%s: the last line is cut" % name)
+                cut_last_lines.append(name)
             whole = read(os.path.join(reference, name))
             if not whole.startswith(data):
                 lines, ref = data.split(b"\n"), whole.split(b"\n")
@@ -122,7 +130,8 @@ def main():
                 1 for l in read(os.path.join(out, "statistics")).split(b"\n")
                 if l and not l.startswith(b"#")
             )
-        faults = faults_of(out, reference)
+        cut = []
+        faults = faults_of(out, reference, cut)
         print(
             "kill %d after %.2f s: %d files (%d temporary), %d statistics rows: %s"
             % (
@@ -133,6 +142,7 @@ def main():
                 rows,
                 "; ".join(faults) if faults else "all complete",
             )
+            + ("" if not cut else " (last line cut, a prefix of the complete run's: %s)" % ", ".join(cut))
         )
         failures += len(faults)
     print("OK" if failures == 0 else "FAILED: %d faults" % failures)
