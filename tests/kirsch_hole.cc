@@ -314,12 +314,7 @@ main(int argc, char **argv)
           const double along =
             stress_at_vertex(simulator, Point<2>(a, 0))[1][1] / S;
           ndda::postprocess::StressRecovery recovery;
-          const auto &cache = simulator.get_discretization().element_cache;
-          recovery.recover(simulator.get_dof_handler(),
-                           simulator.get_mapping(),
-                           cache.get_quadrature(),
-                           cache.get_mass_quadrature(),
-                           simulator.get_stresses().cells());
+          recovery.recover(simulator);
           const auto [nodal_across, mean_across] =
             output_stress_at_vertex(simulator, recovery, Point<2>(0, a));
           const auto [nodal_along, mean_along] =

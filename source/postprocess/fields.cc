@@ -137,13 +137,8 @@ namespace ndda
       void
       add_fields(const Simulator<2> &simulator, Frame &frame) const override
       {
-        const auto &cache    = simulator.get_discretization().element_cache;
-        auto       &recovery = frame.keep(std::make_unique<StressRecovery>());
-        recovery.recover(simulator.get_dof_handler(),
-                         simulator.get_mapping(),
-                         cache.get_quadrature(),
-                         cache.get_mass_quadrature(),
-                         simulator.get_stresses().cells());
+        auto &recovery = frame.keep(std::make_unique<StressRecovery>());
+        recovery.recover(simulator);
         const auto &dofs       = recovery.get_dof_handler();
         const auto &components = recovery.get_components();
         const char *names[]    = {"nodal_stress_xx",

@@ -13,6 +13,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <ndda/postprocess/stress_recovery.h>
+#include <ndda/simulator.h>
 
 #include <cmath>
 
@@ -158,6 +159,19 @@ namespace ndda
           cg.solve(mass, components[k], rhs[k], jacobi);
           iterations = std::max(iterations, control.last_step());
         }
+    }
+
+
+
+    void
+    StressRecovery::recover(const Simulator<2> &simulator)
+    {
+      const auto &cache = simulator.get_discretization().element_cache;
+      recover(simulator.get_dof_handler(),
+              simulator.get_mapping(),
+              cache.get_quadrature(),
+              cache.get_mass_quadrature(),
+              simulator.get_stresses().cells());
     }
 
 

@@ -16,6 +16,9 @@
 
 namespace ndda
 {
+  template <int dim>
+  class Simulator;
+
   namespace postprocess
   {
     using namespace dealii;
@@ -66,6 +69,11 @@ namespace ndda
               const Quadrature<2>                    &cell_quadrature,
               const Quadrature<2>                    &mass_quadrature,
               const std::vector<std::vector<Stress>> &stresses);
+
+      /** recover() the present stresses of @p simulator, on its present
+       * geometry. */
+      void
+      recover(const Simulator<2> &simulator);
 
       /** The scalar element's dofs of the recovered field. */
       const DoFHandler<2> &
