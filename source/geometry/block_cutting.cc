@@ -37,13 +37,16 @@ namespace ndda
         /**
          * Collect the boundary and crack edges of a set of arrangement faces
          * into a Domain. A halfedge whose other side is in the set too is a
-         * crack (or a dangling joint); otherwise it is a boundary edge.
+         * crack (or a dangling joint); otherwise it is a boundary edge, and
+         * a hole edge too if it lies on one of the polygon's holes (curve
+         * ids 1 to @p n_rings - 1).
          */
         template <typename InGroup>
         Domain
         extract_domain(const std::vector<FaceHandle> &faces,
                        const InGroup                 &in_group,
-                       const bool                     keep_cracks)
+                       const bool                     keep_cracks,
+                       const unsigned int             n_rings)
         {
           Domain                                         domain;
           std::unordered_map<const void *, unsigned int> vertex_index;
@@ -69,8 +72,19 @@ namespace ndda
                       {{index_of(h->source()), index_of(h->target())}});
                 }
               else
-                domain.boundary.push_back(
-                  {{index_of(h->source()), index_of(h->target())}});
+                {
+                  domain.boundary.push_back(
+                    {{index_of(h->source()), index_of(h->target())}});
+                  const auto &ids = h->curve().data();
+                  if (std::any_of(ids.begin(),
+                                  ids.end(),
+                                  [&](const unsigned int id) {
+                                    return id > 0 && id < n_rings;
+                                  }))
+                    domain.hole_edges.push_back(
+                      {{domain.points[domain.boundary.back()[0]],
+                        domain.points[domain.boundary.back()[1]]}});
+                }
             });
 
           // Shoelace formula over the oriented boundary.
@@ -184,7 +198,10 @@ namespace ndda
         arrange_polygon(polygon, block.cracks, arrangement, inside, faces);
 
         Domain domain = extract_domain(
-          faces, [&](const FaceHandle &f) { return inside.at(&*f); }, true);
+          faces,
+          [&](const FaceHandle &f) { return inside.at(&*f); },
+          true,
+          polygon.holes.size() + 1);
         domain.name           = block.name;
         domain.material_id    = block.material_id;
         domain.mesh_size      = block.mesh_size;
@@ -223,7 +240,8 @@ namespace ndda
             Domain           domain = extract_domain(
               {face},
               [&](const FaceHandle &f) { return f == face; },
-              region.keep_dangling_as_cracks);
+              region.keep_dangling_as_cracks,
+              polygon.holes.size() + 1);
             domain.name = region.name + "." + std::to_string(domains.size());
             domain.material_id    = region.material_id;
             domain.mesh_size      = region.mesh_size;

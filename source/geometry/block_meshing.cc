@@ -9,6 +9,10 @@
 // Decisions that the header leaves open:
 //  - Every block is meshed alone, so the vertices on a joint shared by two
 //    blocks need not match: blocks are separate bodies that touch.
+//  - A graded mesh (Geometry/Mesh grading) uses the same mesher with the
+//    size bound of each triangle taken from the SizeField at its centroid:
+//    CGAL's own size test, with a local bound. Without grading the field is
+//    absent and the meshes are the uniform ones, bit for bit.
 //  - With a minimum angle above 20.7 degrees Delaunay refinement is not
 //    proven to terminate. A block whose refinement runs past a step budget
 //    is meshed again with 20.7 degrees, and a warning goes to std::cerr.
@@ -55,8 +59,70 @@ namespace ndda
           IK,
           TriangulationDataStructure,
           CGAL::Exact_predicates_tag>;
-        using MeshCriteria = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
-        using Mesher       = CGAL::Delaunay_mesher_2<CDT, MeshCriteria>;
+        using SizeCriteria = CGAL::Delaunay_mesh_size_criteria_2<CDT>;
+
+
+        /**
+         * CGAL's size and shape criteria with the size bound of every
+         * triangle taken from a SizeField at its centroid, or the constant
+         * bound if there is no field. The quality's size part is the
+         * longest edge relative to the local bound, so the mesher splits
+         * the triangles most above their own bound first.
+         */
+        class GradedCriteria : public SizeCriteria
+        {
+        public:
+          GradedCriteria(const double     shape_bound,
+                         const double     size_bound,
+                         const SizeField *field)
+            : CGAL::Delaunay_mesh_criteria_2<CDT>(shape_bound)
+            , SizeCriteria(shape_bound, size_bound)
+            , field(field)
+          {}
+
+          class Is_bad : public SizeCriteria::Is_bad
+          {
+          public:
+            Is_bad(const double       shape_bound,
+                   const double       size_bound,
+                   const Geom_traits &traits,
+                   const SizeField   *field)
+              : SizeCriteria::Is_bad(shape_bound, size_bound, traits)
+              , field(field)
+            {}
+
+            using SizeCriteria::Is_bad::operator();
+
+            CGAL::Mesh_2::Face_badness
+            operator()(const CDT::Face_handle &face, Quality &quality) const
+            {
+              if (field == nullptr)
+                return SizeCriteria::Is_bad::operator()(face, quality);
+              const IPoint  &a = face->vertex(0)->point();
+              const IPoint  &b = face->vertex(1)->point();
+              const IPoint  &c = face->vertex(2)->point();
+              const Point<2> centroid((a.x() + b.x() + c.x()) / 3.,
+                                      (a.y() + b.y() + c.y()) / 3.);
+              return SizeCriteria::Is_bad(this->B,
+                                          (*field)(centroid),
+                                          this->traits)(face, quality);
+            }
+
+          private:
+            const SizeField *field;
+          };
+
+          Is_bad
+          is_bad_object() const
+          {
+            return Is_bad(this->bound(), size_bound(), this->traits, field);
+          }
+
+        private:
+          const SizeField *field;
+        };
+
+        using Mesher = CGAL::Delaunay_mesher_2<CDT, GradedCriteria>;
 
 
         /**
@@ -65,15 +131,6 @@ namespace ndda
          */
         constexpr double guaranteed_shape_bound = 0.125;
 
-        /**
-         * Ratio of the size bound S (longest edge) to the edge length of an
-         * equilateral triangle of the wanted area: the mesher's triangles are
-         * smaller than the bound, so the bound has to be larger than the mean
-         * edge to get about target_n_cells triangles. Measured on a square, a
-         * 64-gon and a 8:1 rectangle: within 5 % from 400 to 100000 cells
-         * (coarser meshes are ruled by the boundary).
-         */
-        constexpr double size_bound_over_mean_edge = 1.47;
 
 
         /**
@@ -254,7 +311,7 @@ namespace ndda
         bool
         refine(const Domain     &domain,
                const double      shape_bound,
-               const double      size_bound,
+               const SizeField  &size_field,
                const std::size_t max_steps,
                CDT              &cdt)
         {
@@ -273,7 +330,11 @@ namespace ndda
 
           mark_domain(cdt, domain);
 
-          Mesher mesher(cdt, MeshCriteria(shape_bound, size_bound));
+          Mesher mesher(cdt,
+                        GradedCriteria(shape_bound,
+                                       size_field.background(),
+                                       size_field.is_uniform() ? nullptr :
+                                                                 &size_field));
           // true: keep the in-domain marks set above instead of seeds.
           mesher.init(true);
           std::size_t steps = 0;
@@ -291,7 +352,9 @@ namespace ndda
          * The size bound of the mesher, which bounds the longest edge: the
          * domain's mesh size, or, for a target number of cells, the edge of
          * equilateral triangles of the mean area scaled by
-         * size_bound_over_mean_edge.
+         * SizeField::size_bound_over_mean_edge (the mesher's triangles are
+         * smaller than the bound, so the bound has to be larger than the
+         * mean edge to get about target_n_cells triangles).
          */
         double
         size_bound_of(const Domain &domain)
@@ -299,10 +362,78 @@ namespace ndda
           double size_bound = domain.mesh_size;
           if (size_bound <= 0.)
             size_bound =
-              size_bound_over_mean_edge *
+              SizeField::size_bound_over_mean_edge *
               std::sqrt(4. * domain.area /
                         (std::sqrt(3.) * double(domain.target_n_cells)));
           return size_bound;
+        }
+
+
+        /**
+         * The crack tips of a domain: ends of crack edges that no other
+         * crack edge and no boundary edge meets.
+         */
+        std::vector<IPoint>
+        crack_tips(const Domain &domain)
+        {
+          std::vector<unsigned int> crack_degree(domain.points.size(), 0);
+          std::vector<bool>         on_boundary(domain.points.size(), false);
+          for (const Edge &e : domain.cracks)
+            for (const unsigned int v : e)
+              ++crack_degree[v];
+          for (const Edge &e : domain.boundary)
+            for (const unsigned int v : e)
+              on_boundary[v] = true;
+          std::vector<IPoint> tips;
+          for (unsigned int v = 0; v < domain.points.size(); ++v)
+            if (crack_degree[v] == 1 && !on_boundary[v])
+              tips.push_back(domain.points[v]);
+          return tips;
+        }
+
+
+        /**
+         * The notches of a domain: boundary points with one incoming and
+         * one outgoing boundary edge where the material's angle (the
+         * domain lies to the left of its boundary edges) exceeds
+         * MeshGrading::notch_angle.
+         */
+        std::vector<IPoint>
+        notches(const Domain &domain)
+        {
+          constexpr unsigned int none = dealii::numbers::invalid_unsigned_int;
+          std::vector<unsigned int> in(domain.points.size(), none);
+          std::vector<unsigned int> out(domain.points.size(), none);
+          std::vector<unsigned int> degree(domain.points.size(), 0);
+          for (unsigned int k = 0; k < domain.boundary.size(); ++k)
+            {
+              out[domain.boundary[k][0]] = k;
+              in[domain.boundary[k][1]]  = k;
+              ++degree[domain.boundary[k][0]];
+            }
+          // A right turn of more than notch_angle - 180 degrees.
+          const double sine = std::sin((MeshGrading::notch_angle - 180.) *
+                                       dealii::numbers::PI / 180.);
+          std::vector<IPoint> result;
+          for (unsigned int v = 0; v < domain.points.size(); ++v)
+            {
+              if (degree[v] != 1 || in[v] == none)
+                continue;
+              const IPoint &p  = domain.points[domain.boundary[in[v]][0]];
+              const IPoint &q  = domain.points[domain.boundary[out[v]][1]];
+              const auto    d1 = domain.points[v] - p;
+              const auto    d2 = q - domain.points[v];
+              const double  cross =
+                CGAL::to_double(d1.x() * d2.y() - d1.y() * d2.x());
+              const double dot = CGAL::to_double(d1 * d2);
+              const double l1  = std::sqrt(CGAL::to_double(d1 * d1));
+              const double l2  = std::sqrt(CGAL::to_double(d2 * d2));
+              // Right turn by more than the threshold: sin of the turn
+              // above the bound, or a turn of more than 90 degrees.
+              if (cross < 0. && (-cross > sine * l1 * l2 || dot < 0.))
+                result.push_back(domain.points[v]);
+            }
+          return result;
         }
 
 
@@ -316,11 +447,11 @@ namespace ndda
         void
         refine_or_fall_back(const Domain     &domain,
                             const double      shape_bound,
-                            const double      size_bound,
+                            const SizeField  &size_field,
                             const std::size_t max_steps,
                             CDT              &cdt)
         {
-          if (refine(domain, shape_bound, size_bound, max_steps, cdt))
+          if (refine(domain, shape_bound, size_field, max_steps, cdt))
             return;
           AssertThrow(shape_bound > guaranteed_shape_bound,
                       dealii::ExcMessage(
@@ -338,7 +469,7 @@ namespace ndda
                        "it is guaranteed to finish."
                     << std::endl;
           const bool done =
-            refine(domain, guaranteed_shape_bound, size_bound, max_steps, cdt);
+            refine(domain, guaranteed_shape_bound, size_field, max_steps, cdt);
           AssertThrow(done,
                       dealii::ExcMessage(
                         "Geometry: block '" + domain.name +
@@ -401,21 +532,71 @@ namespace ndda
 
 
 
+      SizeField
+      size_field_of(const Domain &domain, const MeshGrading &grading)
+      {
+        const double size_bound = size_bound_of(domain);
+        SizeField    field(size_bound, grading.growth_rate);
+        if (!grading.is_active())
+          return field;
+        const auto to_point = [](const IPoint &p) {
+          return Point<2>(p.x(), p.y());
+        };
+        for (const auto &e : domain.hole_edges)
+          field.add_segment(to_point(e[0]), to_point(e[1]), grading.hole_size);
+        for (const IPoint &p : crack_tips(domain))
+          field.add_point(to_point(p), grading.crack_tip_size);
+        for (const IPoint &p : notches(domain))
+          field.add_point(to_point(p), grading.notch_size);
+        // A point feature reaches (H - h)/(g - 1) from itself.
+        const auto   box   = bbox_of(domain.points);
+        const double slope = grading.growth_rate - 1.;
+        const auto   near  = [&](const Point<2> &p, const double size) {
+          const double reach = (size_bound - size) / slope;
+          return p[0] > box.xmin() - reach && p[0] < box.xmax() + reach &&
+                 p[1] > box.ymin() - reach && p[1] < box.ymax() + reach;
+        };
+        if (grading.loaded_point_size > 0.)
+          for (const Point<2> &p : grading.loaded_points)
+            if (near(p, grading.loaded_point_size))
+              field.add_point(p, grading.loaded_point_size);
+        for (const auto &[p, size] : grading.refinement_points)
+          if (near(p, size))
+            field.add_point(p, size);
+        return field;
+      }
+
+
+
+      double
+      expected_cells(const Domain &domain, const SizeField &size_field)
+      {
+        const double h =
+          size_field.background() / SizeField::size_bound_over_mean_edge;
+        return domain.area / (std::sqrt(3.) / 4. * h * h) +
+               size_field.extra_cells();
+      }
+
+
+
       BlockMesh
       mesh_domain(Domain                      &domain,
                   const std::vector<Point<2>> &required,
-                  const double                 shape_bound)
+                  const double                 shape_bound,
+                  const SizeField             &size_field)
       {
         add_required_vertices(domain, required, 1e-12 * domain.diameter);
 
-        const double size_bound = size_bound_of(domain);
-        const double expected_cells =
-          domain.area / (std::sqrt(3.) / 4. * size_bound * size_bound);
+        // The step budget counts the uniform part as equilateral triangles
+        // of edge H, as it always has.
+        const double H = size_field.background();
+        const double n_cells =
+          domain.area / (std::sqrt(3.) / 4. * H * H) + size_field.extra_cells();
         const std::size_t max_steps =
-          200000 + 50 * std::size_t(std::min(expected_cells, 1e9));
+          200000 + 50 * std::size_t(std::min(n_cells, 1e9));
 
         CDT cdt;
-        refine_or_fall_back(domain, shape_bound, size_bound, max_steps, cdt);
+        refine_or_fall_back(domain, shape_bound, size_field, max_steps, cdt);
 
         std::vector<Edge> cracks;
         BlockMesh         mesh = block_mesh_of(cdt, cracks);

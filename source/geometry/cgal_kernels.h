@@ -145,8 +145,12 @@ namespace ndda
         std::vector<IPoint> points;
         std::vector<Edge>   boundary;
         std::vector<Edge>   cracks;
-        double              area     = 0.;
-        double              diameter = 0.;
+        /// The boundary edges that lie on holes of the block or region, as
+        /// end points (for the size field: they stay hole edges when
+        /// required vertices split them).
+        std::vector<std::array<IPoint, 2>> hole_edges;
+        double                             area     = 0.;
+        double                             diameter = 0.;
       };
 
 
@@ -316,12 +320,32 @@ namespace ndda
        * result is a mesh of this block alone, with its own vertex numbers
        * starting at zero. @p required are the points that become vertices
        * if they lie in the closed domain; @p shape_bound is sin^2 of the
-       * minimum angle.
+       * minimum angle; @p size_field bounds the longest edge of the
+       * triangles (size_field_of()).
        */
       BlockMesh
       mesh_domain(Domain                      &domain,
                   const std::vector<Point<2>> &required,
-                  const double                 shape_bound);
+                  const double                 shape_bound,
+                  const SizeField             &size_field);
+
+      /**
+       * The size field of a domain: its size bound (its mesh size, or the
+       * one for its target number of elements), finer near its holes,
+       * crack tips and notches and near the loaded and refinement points of
+       * @p grading that can reach it.
+       */
+      SizeField
+      size_field_of(const Domain &domain, const MeshGrading &grading);
+
+      /**
+       * About how many cells the mesher makes in @p domain with
+       * @p size_field: equilateral triangles of the mean edge
+       * H / SizeField::size_bound_over_mean_edge over the domain, and what
+       * the features add (SizeField::extra_cells()).
+       */
+      double
+      expected_cells(const Domain &domain, const SizeField &size_field);
     } // namespace internal
   }   // namespace geometry
 } // namespace ndda

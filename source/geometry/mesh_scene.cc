@@ -18,6 +18,8 @@
 #include <ndda/geometry/block_mesh.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -57,6 +59,44 @@ namespace ndda
           scene.crack_edges.push_back({{e[0] + offset, e[1] + offset}});
         scene.block_names.push_back(domain.name);
       }
+
+
+      /**
+       * Refuse, before meshing, a graded scene whose size fields ask for
+       * far more cells than Geometry/Maximum number of cells (the uniform
+       * part is checked with the polygons, in validate_scene()). The count
+       * is internal::expected_cells(), an estimate: it is checked against
+       * twice the limit, so that only sizes far too small are refused.
+       */
+      void
+      check_graded_cell_count(const SceneGeometry                 &geometry,
+                              const std::vector<internal::Domain> &domains,
+                              const std::vector<SizeField>        &fields)
+      {
+        double       total = 0., largest = -1.;
+        unsigned int largest_block = 0;
+        for (unsigned int b = 0; b < domains.size(); ++b)
+          {
+            const double n = internal::expected_cells(domains[b], fields[b]);
+            total += n;
+            if (n > largest)
+              {
+                largest       = n;
+                largest_block = b;
+              }
+          }
+        if (total <= 2. * geometry.max_cells)
+          return;
+        std::ostringstream message;
+        message << std::setprecision(3)
+                << "Geometry/Mesh grading: the graded meshes need about "
+                << total << " cells, far more than Geometry/Maximum number of "
+                << "cells = " << geometry.max_cells << " (block '"
+                << domains[largest_block].name << "' alone about " << largest
+                << "). Give larger feature sizes or a larger growth rate, or "
+                   "raise the limit if the machine holds such a scene.";
+        AssertThrow(false, dealii::ExcMessage(message.str()));
+      }
     } // namespace
 
 
@@ -85,6 +125,13 @@ namespace ndda
                                       geometry.regions[r]))
           domains.push_back(std::move(domain));
 
+      std::vector<SizeField> size_fields;
+      for (const auto &domain : domains)
+        size_fields.push_back(
+          internal::size_field_of(domain, geometry.grading));
+      if (geometry.grading.is_active())
+        check_graded_cell_count(geometry, domains, size_fields);
+
       // Every block is meshed on its own and gets its own range of vertex
       // numbers: blocks never share vertices.
       BlockMesh scene;
@@ -93,7 +140,8 @@ namespace ndda
           const BlockMesh block =
             internal::mesh_domain(domains[b],
                                   geometry.required_vertices,
-                                  shape_bound);
+                                  shape_bound,
+                                  size_fields[b]);
           append_block(block, b, domains[b], scene);
         }
       return scene;

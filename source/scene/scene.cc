@@ -16,36 +16,46 @@ namespace ndda
   {
     namespace
     {
-      /** Every point where something acts: these become mesh vertices. */
+      /**
+       * The points where something acts, in this order (the mesh depends
+       * on it): point loads, ends of line loads, for every boundary
+       * condition its points and (if @p all) the ends of its segments,
+       * ends of bolts, and (if @p all) the measure points. With @p all
+       * these are the points that become mesh vertices; without, the
+       * points where a concentrated force acts (Geometry/Mesh
+       * grading/Loaded point mesh size).
+       */
       std::vector<Point<2>>
-      required_vertices(const parameters::Parameters &parameters)
+      acting_points(const parameters::Parameters &parameters, const bool all)
       {
-        std::vector<Point<2>> required;
+        std::vector<Point<2>> points;
         for (const auto &load : parameters.loads.point_loads)
-          required.push_back(load.point);
+          points.push_back(load.point);
         for (const auto &load : parameters.loads.line_loads)
           {
-            required.push_back(load.segment.a);
-            required.push_back(load.segment.b);
+            points.push_back(load.segment.a);
+            points.push_back(load.segment.b);
           }
         for (const auto &bc : parameters.boundary_conditions.conditions)
           {
-            required.insert(required.end(), bc.points.begin(), bc.points.end());
-            for (const auto &s : bc.segments)
-              {
-                required.push_back(s.a);
-                required.push_back(s.b);
-              }
+            points.insert(points.end(), bc.points.begin(), bc.points.end());
+            if (all)
+              for (const auto &s : bc.segments)
+                {
+                  points.push_back(s.a);
+                  points.push_back(s.b);
+                }
           }
         for (const auto &bolt : parameters.bolts.bolts)
           {
-            required.push_back(bolt.first);
-            required.push_back(bolt.second);
+            points.push_back(bolt.first);
+            points.push_back(bolt.second);
           }
-        required.insert(required.end(),
+        if (all)
+          points.insert(points.end(),
                         parameters.output.measure_points.begin(),
                         parameters.output.measure_points.end());
-        return required;
+        return points;
       }
     } // namespace
 
@@ -83,12 +93,14 @@ namespace ndda
                                  "'set Blocks = name' with a subsection "
                                  "'name', or Regions, or a Mesh file."));
           geometry::SceneGeometry scene;
-          scene.blocks            = geometry.blocks;
-          scene.regions           = geometry.regions;
-          scene.min_angle         = geometry.min_angle;
-          scene.max_cells         = geometry.max_cells;
-          scene.snap_tolerance    = geometry.snap_tolerance;
-          scene.required_vertices = required_vertices(parameters);
+          scene.blocks                = geometry.blocks;
+          scene.regions               = geometry.regions;
+          scene.min_angle             = geometry.min_angle;
+          scene.max_cells             = geometry.max_cells;
+          scene.snap_tolerance        = geometry.snap_tolerance;
+          scene.required_vertices     = acting_points(parameters, true);
+          scene.grading               = geometry.grading;
+          scene.grading.loaded_points = acting_points(parameters, false);
           mesh.build(geometry::mesh_scene(scene));
         }
       const auto n_materials = parameters.materials.materials.size();

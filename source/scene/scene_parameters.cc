@@ -158,6 +158,55 @@ namespace ndda
                         Patterns::Double(10., 33.),
                         "Minimum triangle angle of the Delaunay "
                         "refinement (degrees).");
+      prm.enter_subsection("Mesh grading");
+      {
+        prm.declare_entry(
+          "Growth rate",
+          "1.3",
+          Patterns::Double(1.01, 4.),
+          "How fast the mesh coarsens away from a feature given below: the "
+          "size bound at distance d from the feature is h + (g - 1) d, so "
+          "neighbouring triangles differ in size by about this factor g, up "
+          "to the block's own mesh size. Smaller is smoother and costs "
+          "more cells.");
+        prm.declare_entry(
+          "Hole mesh size",
+          "0",
+          Patterns::Double(0.),
+          "Longest triangle edge (m) at the boundary of every hole of every "
+          "block and region. 0: no refinement there.");
+        prm.declare_entry(
+          "Crack tip mesh size",
+          "0",
+          Patterns::Double(0.),
+          "Longest triangle edge (m) at every tip of a pre-existing crack "
+          "(and of a dangling joint kept as a crack): an end that lies "
+          "inside its block. 0: no refinement there.");
+        prm.declare_entry(
+          "Notch mesh size",
+          "0",
+          Patterns::Double(0.),
+          "Longest triangle edge (m) at every re-entrant corner of a block "
+          "(the material's angle above 190 degrees), where the elastic "
+          "stress is singular. 0: no refinement there.");
+        prm.declare_entry(
+          "Loaded point mesh size",
+          "0",
+          Patterns::Double(0.),
+          "Longest triangle edge (m) at every point where a concentrated "
+          "force acts: point loads, the ends of line loads, the points of "
+          "boundary conditions and the ends of bolts. 0: no refinement "
+          "there.");
+        prm.declare_entry(
+          "Refinement points",
+          "",
+          Patterns::Anything(),
+          "Further points with their own sizes, 'x, y, size; x, y, size' "
+          "(m): the longest triangle edge at the point, growing with the "
+          "growth rate away from it (for example where a crack is expected "
+          "to start, or where a plate will touch).");
+      }
+      prm.leave_subsection();
       for (const auto &name : block_names)
         {
           prm.enter_subsection(name);
@@ -221,7 +270,29 @@ namespace ndda
       min_angle      = prm.get_double("Minimum angle");
       max_cells      = prm.get_double("Maximum number of cells");
       snap_tolerance = prm.get_double("Snapping tolerance");
-      mesh_file      = prm.get("Mesh file");
+      prm.enter_subsection("Mesh grading");
+      {
+        grading                   = geometry::MeshGrading();
+        grading.growth_rate       = prm.get_double("Growth rate");
+        grading.hole_size         = prm.get_double("Hole mesh size");
+        grading.crack_tip_size    = prm.get_double("Crack tip mesh size");
+        grading.notch_size        = prm.get_double("Notch mesh size");
+        grading.loaded_point_size = prm.get_double("Loaded point mesh size");
+        const std::string entry   = "Geometry/Mesh grading/Refinement points";
+        for (const auto &piece : split(prm.get("Refinement points"), ";"))
+          {
+            const auto numbers = parse_numbers(piece, entry, 3);
+            AssertThrow(numbers[2] > 0.,
+                        ExcMessage(entry + ": '" + Utilities::trim(piece) +
+                                   "' has a size <= 0. Give 'x, y, size' "
+                                   "with a size > 0 (m)."));
+            grading.refinement_points.emplace_back(Point<2>(numbers[0],
+                                                            numbers[1]),
+                                                   numbers[2]);
+          }
+      }
+      prm.leave_subsection();
+      mesh_file = prm.get("Mesh file");
       if (!mesh_file.empty())
         {
           if (mesh_file.front() != '/')
@@ -232,6 +303,12 @@ namespace ndda
                                  mesh_file +
                                  "'. Check the path; a relative path is "
                                  "taken relative to the .prm file."));
+          AssertThrow(!grading.is_active() && grading.loaded_point_size == 0.,
+                      ExcMessage("Geometry/Mesh grading: sizes are given "
+                                 "together with a Mesh file. Grading applies "
+                                 "to Blocks and Regions, which ndda meshes; "
+                                 "a mesh file is used as it is. Grade the "
+                                 "mesh in gmsh, or set the sizes to 0."));
           AssertThrow(block_names.empty() && region_names.empty(),
                       ExcMessage("Geometry/Mesh file: a mesh file is given "
                                  "together with Blocks or Regions. Use "

@@ -4,6 +4,8 @@
 
 #include <deal.II/base/point.h>
 
+#include <ndda/geometry/size_field.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -100,6 +102,8 @@ namespace ndda
       /// blocks or regions closer than it become one point, and an overlap
       /// thinner than it is taken as touching. Zero: exact geometry.
       double snap_tolerance = 1e-9;
+      /// Where the meshes are finer than their blocks' mesh sizes.
+      MeshGrading grading;
     };
 
     /**

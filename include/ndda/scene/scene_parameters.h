@@ -54,6 +54,9 @@ namespace ndda
       double max_cells;
       /// Snapping tolerance, relative to the scene's size.
       double snap_tolerance;
+      /// Geometry/Mesh grading (its loaded points are filled in by the
+      /// scene, from the loads and boundary conditions).
+      geometry::MeshGrading grading;
 
       static void
       declare_parameters(ParameterHandler               &prm,
