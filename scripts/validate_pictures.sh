@@ -9,7 +9,9 @@
 #   for the others), histories against the analytical curves
 #   (scripts/plot_history.py), the stress-strain curves of the compression
 #   tests and the Brazilian disc's centre stress against 2P/(pi D t)
-#   (scripts/plot_load_curves.py);
+#   (scripts/plot_load_curves.py); Kirsch's hole, cells against accuracy
+#   for uniform and graded meshes (scripts/plot_cells_against_error.py,
+#   from the test suite's kirsch_hole);
 # - when their scripts exist: the speed-accuracy charts
 #   (scripts/speed_accuracy.py, doc/speed_accuracy/), the integrators'
 #   charts of the brick wall and the Brazilian disc
@@ -245,6 +247,14 @@ frames $name --times 0,0.02,0.5,1 --names start,after_pulse,middle,end --initial
 history $name \
   --column "point 0 u_y" --column "point 2 u_y" \
   --out "$gallery/${name}_history.png"
+
+# Kirsch's hole, cells against accuracy: the data come from the test
+# suite's kirsch_hole (part 3), which ./ndda.sh validate has just run.
+kirsch_data="$(dirname "$ndda")/tests/kirsch_hole/cells_against_error.txt"
+if [ -f "$kirsch_data" ]; then
+  "$py" "$here/scripts/plot_cells_against_error.py" "$kirsch_data" \
+    --out "$gallery/kirsch_cells_against_error.png"
+fi
 
 # ------------------------------------------------------- the long sweeps
 if [ "${NDDA_PICTURES_ONLY_GALLERY:-0}" = 1 ]; then
