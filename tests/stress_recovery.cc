@@ -7,7 +7,11 @@
 //     squares that touch along x = 1 with separate nodes there (a crack
 //     face or a block boundary), each with its own field: the projection
 //     must not mix them;
-//  2. for P2, a quadratic stress is not reproduced at the nodes (the
+//  2. for P1, the patch recovery (the default for linear elements)
+//     reproduces a linear stress at every node, boundary nodes and the
+//     pieces' corners included, while the L2 projection alone cannot (its
+//     error falls with h);
+//  3. for P2, a quadratic stress is not reproduced at the nodes (the
 //     cell's three points cannot hold it), but the error falls as h^2.
 
 #include <deal.II/base/quadrature_lib.h>
@@ -92,9 +96,12 @@ namespace
    * FE_SimplexP(@p degree); return the largest error at a node (Pa).
    */
   double
-  recovery_error(const unsigned int degree,
-                 const unsigned int degree_of_field,
-                 const unsigned int n)
+  recovery_error(
+    const unsigned int                                    degree,
+    const unsigned int                                    degree_of_field,
+    const unsigned int                                    n,
+    const ndda::postprocess::StressRecovery::LinearMethod method =
+      ndda::postprocess::StressRecovery::LinearMethod::patch_recovery)
   {
     Triangulation<2> mesh;
     two_squares(mesh, n);
@@ -115,8 +122,10 @@ namespace
             field(p, left, degree_of_field));
       }
 
-    ndda::postprocess::StressRecovery recovery;
+    ndda::postprocess::StressRecovery recovery(method);
     recovery.recover(dofs, mapping, cell_quadrature, mass_quadrature, stresses);
+    check(recovery.n_projected_nodes() == 0,
+          "every node recovered without falling back to the projection");
     const auto           &recovered = recovery.get_dof_handler();
     std::vector<Point<2>> support(recovered.n_dofs());
     DoFTools::map_dofs_to_support_points(mapping, recovered, support);
@@ -155,16 +164,22 @@ main()
       // fields is round-off.
       check(error < 1e-3, "P" + std::to_string(degree) + " reproduces it");
     }
-  // A P1 mesh cannot reproduce a linear stress at its nodes (and no piece
-  // sees the other's): the error is there, and falls with h.
-  const double p1_coarse = recovery_error(1, 1, 4);
-  const double p1_fine   = recovery_error(1, 1, 8);
-  std::cout << "P1, a linear stress: largest error " << p1_coarse << " Pa (h "
-            << "= 1/4), " << p1_fine << " Pa (h = 1/8)" << std::endl;
+  // 2. P1 and a linear stress: the patch recovery reproduces it; the
+  // projection of one constant a cell cannot (and no piece sees the
+  // other's): its error is there, and falls with h.
+  const double patch = recovery_error(1, 1, 4);
+  std::cout << "P1, a linear stress, patch recovery: largest error at a node "
+            << patch << " Pa" << std::endl;
+  check(patch < 1e-3, "P1 patch recovery reproduces a linear stress");
+  using Method           = ndda::postprocess::StressRecovery::LinearMethod;
+  const double p1_coarse = recovery_error(1, 1, 4, Method::projection);
+  const double p1_fine   = recovery_error(1, 1, 8, Method::projection);
+  std::cout << "P1, a linear stress, projection: largest error " << p1_coarse
+            << " Pa (h = 1/4), " << p1_fine << " Pa (h = 1/8)" << std::endl;
   check(p1_coarse > 1e3 && p1_fine < 0.6 * p1_coarse,
-        "P1: linear stress, an error that falls with h");
+        "P1 projection: linear stress, an error that falls with h");
 
-  // 2. P2 and a quadratic stress: the error falls as h^2.
+  // 3. P2 and a quadratic stress: the error falls as h^2.
   const double coarse = recovery_error(2, 2, 4);
   const double fine   = recovery_error(2, 2, 8);
   std::cout << "P2, a quadratic stress: largest error " << coarse

@@ -128,7 +128,8 @@ namespace ndda
 
     /**
      * The stresses recovered at the nodes (StressRecovery: the L2
-     * projection onto the element's own space, piece by piece) and their
+     * projection onto the element's own space, or for a linear element
+     * the patch recovery, piece by piece) and their
      * principal stresses, as point fields (Pa).
      */
     class NodalStressFields : public Postprocessor
@@ -263,7 +264,8 @@ namespace ndda
       "VTU point fields 'nodal_stress_xx', 'nodal_stress_yy', "
       "'nodal_stress_xy', 'nodal_principal_stress_1' and "
       "'nodal_principal_stress_2': the stresses at the quadrature points "
-      "projected (L2) onto the element's own continuous space, within each "
+      "projected (L2) onto the element's own continuous space, for linear "
+      "elements recovered by Zienkiewicz-Zhu patches instead, within each "
       "piece of the mesh, never across a crack or between blocks (Pa, "
       "tension positive). Right at peaks on boundaries where the cell "
       "means lie a third of a cell inside; drawn with the element's "

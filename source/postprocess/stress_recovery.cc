@@ -15,6 +15,7 @@
 #include <ndda/postprocess/stress_recovery.h>
 #include <ndda/simulator.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ndda
@@ -68,7 +69,220 @@ namespace ndda
         at_to.mmult(result, coefficients);
         return result;
       }
+
+
+      /**
+       * A linear stress a + b (x - c)/L + d (y - c)/L fitted to samples
+       * around the centre c, L the farthest sample's distance (so that the
+       * normal matrix is well scaled).
+       */
+      class LinearFit
+      {
+      public:
+        /**
+         * Fit @p values at @p points. Returns false, and leaves the fit
+         * unusable, if the points do not determine a linear function
+         * (fewer than three, or nearly on one line).
+         */
+        bool
+        fit(const Point<2>                            &centre,
+            const std::vector<Point<2>>               &points,
+            const std::vector<StressRecovery::Stress> &values)
+        {
+          c = centre;
+          L = 0;
+          for (const auto &p : points)
+            L = std::max(L, p.distance(centre));
+          if (points.size() < 3 || L == 0.)
+            return false;
+          FullMatrix<double>            normal(3, 3);
+          std::array<Vector<double>, 3> rhs;
+          for (auto &r : rhs)
+            r.reinit(3);
+          for (unsigned int s = 0; s < points.size(); ++s)
+            {
+              const auto b = basis(points[s]);
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  for (unsigned int j = 0; j < 3; ++j)
+                    normal(i, j) += b[i] * b[j];
+                  rhs[0](i) += b[i] * values[s][0][0];
+                  rhs[1](i) += b[i] * values[s][1][1];
+                  rhs[2](i) += b[i] * values[s][0][1];
+                }
+            }
+          // Samples nearly on a line leave the normal matrix nearly
+          // singular: refuse a condition number above 1e6 (l1 norms).
+          const double       norm = normal.l1_norm();
+          FullMatrix<double> inverse(normal);
+          inverse.gauss_jordan();
+          if (!std::isfinite(inverse.l1_norm()) ||
+              norm * inverse.l1_norm() > 1e6)
+            return false;
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              coefficients[k].reinit(3);
+              inverse.vmult(coefficients[k], rhs[k]);
+            }
+          return true;
+        }
+
+        /** The fitted stress at @p x. */
+        StressRecovery::Stress
+        operator()(const Point<2> &x) const
+        {
+          const auto             b = basis(x);
+          StressRecovery::Stress s;
+          double                 v[3] = {0, 0, 0};
+          for (unsigned int k = 0; k < 3; ++k)
+            for (unsigned int i = 0; i < 3; ++i)
+              v[k] += coefficients[k](i) * b[i];
+          s[0][0] = v[0];
+          s[1][1] = v[1];
+          s[0][1] = v[2];
+          return s;
+        }
+
+      private:
+        std::array<double, 3>
+        basis(const Point<2> &x) const
+        {
+          return {{1., (x[0] - c[0]) / L, (x[1] - c[1]) / L}};
+        }
+
+        Point<2>                      c;
+        double                        L = 0;
+        std::array<Vector<double>, 3> coefficients;
+      };
     } // namespace
+
+
+
+    void
+    StressRecovery::recover_by_patches(
+      const Mapping<2>                       &mapping,
+      const Quadrature<2>                    &quadrature,
+      const std::vector<std::vector<Stress>> &stresses)
+    {
+      const auto        &fe = dof_handler.get_fe();
+      const unsigned int n  = dof_handler.n_dofs();
+
+      // Per cell: its dofs, their positions and the stresses' points, on
+      // the present geometry; per dof: the cells around it and whether it
+      // lies on the boundary of its piece.
+      FEValues<2>        at_stress_points(mapping,
+                                   fe,
+                                   quadrature,
+                                   update_quadrature_points);
+      FEValues<2>        at_nodes(mapping,
+                           fe,
+                           Quadrature<2>(fe.get_unit_support_points()),
+                           update_quadrature_points);
+      const unsigned int n_cells =
+        dof_handler.get_triangulation().n_active_cells();
+      std::vector<std::vector<types::global_dof_index>> cell_dofs(n_cells);
+      std::vector<std::vector<Point<2>>>                cell_nodes(n_cells);
+      std::vector<std::vector<Point<2>>>                cell_points(n_cells);
+      std::vector<std::vector<unsigned int>>            patch(n);
+      std::vector<Point<2>>                             position(n);
+      std::vector<bool>                                 on_boundary(n, false);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          const unsigned int c = cell->active_cell_index();
+          cell_dofs[c].resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(cell_dofs[c]);
+          at_stress_points.reinit(cell);
+          at_nodes.reinit(cell);
+          cell_points[c] = at_stress_points.get_quadrature_points();
+          cell_nodes[c]  = at_nodes.get_quadrature_points();
+          for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
+            {
+              patch[cell_dofs[c][i]].push_back(c);
+              position[cell_dofs[c][i]] = cell_nodes[c][i];
+            }
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
+                if (cell_nodes[c][i].distance(cell->face(f)->vertex(0)) <
+                      1e-12 * cell->diameter() ||
+                    cell_nodes[c][i].distance(cell->face(f)->vertex(1)) <
+                      1e-12 * cell->diameter())
+                  on_boundary[cell_dofs[c][i]] = true;
+        }
+
+      std::vector<LinearFit> fits(n);
+      std::vector<bool>      fitted(n, false);
+      std::vector<Point<2>>  points;
+      std::vector<Stress>    values;
+      for (types::global_dof_index i = 0; i < n; ++i)
+        {
+          points.clear();
+          values.clear();
+          for (const unsigned int c : patch[i])
+            for (unsigned int q = 0; q < cell_points[c].size(); ++q)
+              {
+                points.push_back(cell_points[c][q]);
+                values.push_back(stresses[c][q]);
+              }
+          fitted[i] = fits[i].fit(position[i], points, values);
+        }
+
+      // Inner nodes: their own fits. Boundary nodes: the mean of the fits
+      // of the inner nodes whose cells touch them.
+      std::vector<Stress>       sum(n);
+      std::vector<unsigned int> count(n, 0);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        if (!on_boundary[i] && fitted[i])
+          for (const unsigned int c : patch[i])
+            for (const auto j : cell_dofs[c])
+              if (on_boundary[j])
+                {
+                  sum[j] += fits[i](position[j]);
+                  ++count[j];
+                }
+      projected_nodes = 0;
+      for (types::global_dof_index i = 0; i < n; ++i)
+        {
+          Stress s;
+          if (!on_boundary[i] && fitted[i])
+            s = fits[i](position[i]);
+          else if (on_boundary[i] && count[i] > 0)
+            s = sum[i] / double(count[i]);
+          else if (fitted[i])
+            s = fits[i](position[i]);
+          else
+            {
+              // A node whose cells alone do not determine a linear fit
+              // and that no inner node's cells touch (a corner with one
+              // cell): the fit over its cells and their neighbours through
+              // a node.
+              std::vector<unsigned int> ring;
+              for (const unsigned int c : patch[i])
+                for (const auto j : cell_dofs[c])
+                  ring.insert(ring.end(), patch[j].begin(), patch[j].end());
+              std::sort(ring.begin(), ring.end());
+              ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+              points.clear();
+              values.clear();
+              for (const unsigned int c : ring)
+                for (unsigned int q = 0; q < cell_points[c].size(); ++q)
+                  {
+                    points.push_back(cell_points[c][q]);
+                    values.push_back(stresses[c][q]);
+                  }
+              LinearFit wide;
+              if (!wide.fit(position[i], points, values))
+                {
+                  ++projected_nodes;
+                  continue;
+                }
+              s = wide(position[i]);
+            }
+          components[0](i) = s[0][0];
+          components[1](i) = s[1][1];
+          components[2](i) = s[0][1];
+        }
+    }
 
 
 
@@ -159,6 +373,12 @@ namespace ndda
           cg.solve(mass, components[k], rhs[k], jacobi);
           iterations = std::max(iterations, control.last_step());
         }
+
+      // A linear element: three dofs a cell, one at each vertex.
+      projected_nodes = 0;
+      if (linear_method == LinearMethod::patch_recovery &&
+          fe.n_dofs_per_cell() == 3 && fe.n_dofs_per_vertex() == 1)
+        recover_by_patches(mapping, quadrature, stresses);
     }
 
 

@@ -49,12 +49,45 @@ namespace ndda
      * integrated with the mass quadrature, so that a stress of that degree
      * is projected exactly.
      *
+     * For a linear element (three dofs per cell, one at each vertex) the
+     * projection of one constant a cell gains nothing at a boundary, so
+     * by default the projected values are then replaced by the
+     * superconvergent patch recovery of Zienkiewicz and Zhu (1992): at
+     * every node inside a piece a linear stress is fitted by least squares
+     * to the stresses of the cells around the node (at their quadrature
+     * points) and evaluated at the node; a node on the boundary (an outer
+     * edge, a hole, a crack face) takes the mean of the fits of the inner
+     * nodes whose cells touch it, or its own fit if it has none, or keeps
+     * the projected value if its own cells cannot determine a linear fit
+     * (doc/theory.md, "Nodal stresses"). Patches are made of the cells
+     * that share the node's dof, so they never reach across a crack or
+     * into another block.
+     *
      * @ingroup postprocess
      */
     class StressRecovery
     {
     public:
       using Stress = SymmetricTensor<2, 2>;
+
+      /** How the nodal values of a linear element are found. */
+      enum class LinearMethod
+      {
+        /// The L2 projection alone.
+        projection,
+        /// Zienkiewicz-Zhu patch recovery, the projection as fallback.
+        patch_recovery
+      };
+
+      /**
+       * @param linear_method For linear elements: patch recovery (the
+       *   default) or the L2 projection. Other elements always use the
+       *   projection.
+       */
+      explicit StressRecovery(
+        const LinearMethod linear_method = LinearMethod::patch_recovery)
+        : linear_method(linear_method)
+      {}
 
       /**
        * Project @p stresses, given at the points of @p cell_quadrature of
@@ -106,7 +139,22 @@ namespace ndda
         return iterations;
       }
 
+      /** How many nodes of the last recover() kept the projected value
+       * because no patch determined a linear fit (0 for other elements). */
+      unsigned int
+      n_projected_nodes() const
+      {
+        return projected_nodes;
+      }
+
     private:
+      void
+      recover_by_patches(const Mapping<2>                       &mapping,
+                         const Quadrature<2>                    &quadrature,
+                         const std::vector<std::vector<Stress>> &stresses);
+
+      LinearMethod                  linear_method;
+      unsigned int                  projected_nodes = 0;
       DoFHandler<2>                 dof_handler;
       std::array<Vector<double>, 3> components;
       unsigned int                  iterations = 0;
