@@ -257,6 +257,22 @@ main(int argc, char **argv)
       "refinement_point", geometry, field, 0.005, [](const Point<2> &x) {
         return x.distance(Point<2>(0.2, 0.7));
       });
+    // A growth rate of 1 would never coarsen: refused, naming the entry.
+    {
+      SceneGeometry flat       = geometry;
+      flat.grading.growth_rate = 1.;
+      bool refused             = false;
+      try
+        {
+          mesh_scene(flat);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          refused = std::string(e.what()).find(
+                      "Geometry/Mesh grading/Growth rate") != std::string::npos;
+        }
+      check(refused, "a growth rate of 1 is refused, naming the entry");
+    }
     // A hole size in a block without holes changes nothing.
     const BlockMesh without    = mesh_scene(geometry);
     geometry.grading.hole_size = 0.001;

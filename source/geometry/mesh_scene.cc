@@ -62,6 +62,45 @@ namespace ndda
 
 
       /**
+       * Refuse grading settings a user can get wrong: a growth rate not
+       * above 1, a size that is negative or not finite, a refinement
+       * point that is not finite or has no positive size.
+       */
+      void
+      check_grading(const MeshGrading &grading)
+      {
+        AssertThrow(
+          std::isfinite(grading.growth_rate) && grading.growth_rate > 1.,
+          dealii::ExcMessage("Geometry/Mesh grading/Growth rate: got " +
+                             std::to_string(grading.growth_rate) +
+                             ". Give a ratio of neighbouring triangle sizes "
+                             "above 1, for example 1.3."));
+        for (const auto &[size, entry] :
+             {std::make_pair(grading.hole_size, "Hole mesh size"),
+              std::make_pair(grading.crack_tip_size, "Crack tip mesh size"),
+              std::make_pair(grading.notch_size, "Notch mesh size"),
+              std::make_pair(grading.loaded_point_size,
+                             "Loaded point mesh size")})
+          AssertThrow(std::isfinite(size) && size >= 0.,
+                      dealii::ExcMessage(
+                        std::string("Geometry/Mesh grading/") + entry +
+                        ": got " + std::to_string(size) +
+                        ". Give a length (m) > 0, or 0 for no refinement "
+                        "there."));
+        for (const auto &[p, size] : grading.refinement_points)
+          AssertThrow(std::isfinite(p[0]) && std::isfinite(p[1]) &&
+                        std::isfinite(size) && size > 0.,
+                      dealii::ExcMessage(
+                        "Geometry/Mesh grading/Refinement points: the "
+                        "point " +
+                        internal::format_point(p[0], p[1]) + " with size " +
+                        std::to_string(size) +
+                        " is not finite or its size is not positive. Give "
+                        "'x, y, size; ...' with sizes > 0 (m)."));
+      }
+
+
+      /**
        * Refuse, before meshing, a graded scene whose size fields ask for
        * far more cells than Geometry/Maximum number of cells (the uniform
        * part is checked with the polygons, in validate_scene()). The count
@@ -106,6 +145,7 @@ namespace ndda
     {
       // Corners computed by trigonometry land within a rounding error of
       // each other: they become one point before anything is checked.
+      check_grading(input.grading);
       const SceneGeometry geometry = internal::snap_corners(input);
       // Validate everything before meshing anything, so that the user sees
       // the input errors at once.

@@ -552,35 +552,6 @@ namespace ndda
                         " degrees. Give a value in (0, 33]; 30 is the usual "
                         "choice (Delaunay refinement does not finish for much "
                         "larger angles)."));
-          const MeshGrading &grading = geometry.grading;
-          AssertThrow(
-            std::isfinite(grading.growth_rate) && grading.growth_rate > 1.,
-            dealii::ExcMessage("Geometry/Mesh grading/Growth rate: got " +
-                               std::to_string(grading.growth_rate) +
-                               ". Give a ratio of neighbouring triangle sizes "
-                               "above 1, for example 1.3."));
-          for (const auto &[size, entry] :
-               {std::make_pair(grading.hole_size, "Hole mesh size"),
-                std::make_pair(grading.crack_tip_size, "Crack tip mesh size"),
-                std::make_pair(grading.notch_size, "Notch mesh size"),
-                std::make_pair(grading.loaded_point_size,
-                               "Loaded point mesh size")})
-            AssertThrow(std::isfinite(size) && size >= 0.,
-                        dealii::ExcMessage(
-                          std::string("Geometry/Mesh grading/") + entry +
-                          ": got " + std::to_string(size) +
-                          ". Give a length (m) > 0, or 0 for no refinement "
-                          "there."));
-          for (const auto &[p, size] : grading.refinement_points)
-            AssertThrow(std::isfinite(p[0]) && std::isfinite(p[1]) &&
-                          std::isfinite(size) && size > 0.,
-                        dealii::ExcMessage(
-                          "Geometry/Mesh grading/Refinement points: the "
-                          "point " +
-                          format_point(p[0], p[1]) + " with size " +
-                          std::to_string(size) +
-                          " is not finite or its size is not positive. Give "
-                          "'x, y, size; ...' with sizes > 0 (m)."));
           for (std::size_t i = 0; i < geometry.required_vertices.size(); ++i)
             {
               const auto &p = geometry.required_vertices[i];
