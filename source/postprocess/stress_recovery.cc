@@ -200,14 +200,13 @@ namespace ndda
               patch[cell_dofs[c][i]].push_back(c);
               position[cell_dofs[c][i]] = cell_nodes[c][i];
             }
+          // A linear element's dof i sits at vertex i.
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
-                if (cell_nodes[c][i].distance(cell->face(f)->vertex(0)) <
-                      1e-12 * cell->diameter() ||
-                    cell_nodes[c][i].distance(cell->face(f)->vertex(1)) <
-                      1e-12 * cell->diameter())
-                  on_boundary[cell_dofs[c][i]] = true;
+                for (const unsigned int k : cell->face(f)->vertex_indices())
+                  if (cell->face(f)->vertex_index(k) == cell->vertex_index(i))
+                    on_boundary[cell_dofs[c][i]] = true;
         }
 
       std::vector<LinearFit> fits(n);
