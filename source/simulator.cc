@@ -123,7 +123,8 @@ namespace ndda
                          fem.cell_material,
                          ndda::parameters::material_strengths(
                            parameters.materials),
-                         fem.meshed_cells());
+                         fem.meshed_cells(),
+                         parameters.fracture.nonlocal_radius);
     fem.setup_loads(parameters);
     fem.check_expressions(parameters);
     measure_points.setup(
@@ -530,7 +531,8 @@ namespace ndda
                          fem.cell_material,
                          ndda::parameters::material_strengths(
                            parameters.materials),
-                         fem.meshed_cells());
+                         fem.meshed_cells(),
+                         parameters.fracture.nonlocal_radius);
 
     // A crack changes no cell's shape (cells keep their index, vertex
     // order and geometry; only dof numbers change): element matrices are

@@ -124,7 +124,8 @@ namespace ndda
                          fem.cell_material,
                          ndda::parameters::material_strengths(
                            parameters.materials),
-                         fem.meshed_cells());
+                         fem.meshed_cells(),
+                         parameters.fracture.nonlocal_radius);
     if (at_start)
       return;
     // The element matrices stay (they are the cells'); the system is

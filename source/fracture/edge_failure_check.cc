@@ -13,10 +13,12 @@ namespace ndda
       const CrackableMesh                        &mesh,
       const std::vector<unsigned int>            &cell_material,
       const std::vector<std::optional<Strength>> &material_strength,
-      const std::vector<bool>                    &may_crack)
+      const std::vector<bool>                    &may_crack,
+      const double                                nonlocal_radius)
     {
       edges.clear();
       strength.clear();
+      has_nonlocal = false;
       any_material_fractures =
         std::any_of(material_strength.begin(),
                     material_strength.end(),
@@ -24,11 +26,15 @@ namespace ndda
       if (!any_material_fractures)
         return;
       const auto &block_mesh = mesh.get_block_mesh();
+      // Every interior edge that is not a closed crack: where the material
+      // is continuous (the nonlocal average passes through these).
+      std::vector<InteriorEdge> continuous;
       for (const auto &edge : find_interior_edges(block_mesh.triangles,
                                                   block_mesh.vertices.size()))
+        if (!mesh.is_cracked(edge.vertices[0], edge.vertices[1]))
+          continuous.push_back(edge);
+      for (const auto &edge : continuous)
         {
-          if (mesh.is_cracked(edge.vertices[0], edge.vertices[1]))
-            continue; // a closed crack (both tips inside a block)
           if (!may_crack.empty() &&
               (!may_crack[edge.cells[0]] || !may_crack[edge.cells[1]]))
             continue;
@@ -44,6 +50,18 @@ namespace ndda
           edges.push_back(edge);
           strength.push_back(s);
         }
+      if (nonlocal_radius > 0.)
+        {
+          // On the initial geometry: the radius is measured in the
+          // material, and a row kept after a crack is the row a fresh
+          // setup would compute (a resumed run gets the same weights).
+          nonlocal.setup(edges,
+                         continuous,
+                         mesh.get_initial_vertices(),
+                         block_mesh.triangles,
+                         nonlocal_radius);
+          has_nonlocal = true;
+        }
     }
 
 
@@ -58,11 +76,25 @@ namespace ndda
       const double                                    time,
       const double                                    dt)
     {
-      const auto method       = parameters.edge_stress_method;
-      const auto start_states = edge_states(
-        edges, start.vertices, triangles, start.cell_stress, cell_area, method);
-      const auto end_states = edge_states(
-        edges, end.vertices, triangles, end.cell_stress, cell_area, method);
+      const auto method = parameters.edge_stress_method;
+      const auto states = [&](const BlockState &state) {
+        if (method != EdgeStressMethod::nonlocal_average)
+          return edge_states(edges,
+                             state.vertices,
+                             triangles,
+                             state.cell_stress,
+                             cell_area,
+                             method);
+        AssertThrow(has_nonlocal,
+                    dealii::ExcMessage(
+                      "EdgeFailureCheck: the nonlocal edge stress needs a "
+                      "positive radius in setup()."));
+        return edge_states(edges,
+                           state.vertices,
+                           nonlocal.apply(state.cell_stress));
+      };
+      const auto start_states      = states(start);
+      const auto end_states        = states(end);
       const bool first_record_done = first.mode != FailureMode::none;
       n_failing                    = 0;
       // The edges that fail, with their failure times (fractions of the

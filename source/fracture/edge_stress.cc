@@ -209,14 +209,29 @@ namespace ndda
                 const EdgeStressMethod                          method)
     {
       AssertDimension(cell_stresses.size(), triangles.size());
-      const std::vector<SymmetricTensor<2, 2>> stresses =
+      Assert(method != EdgeStressMethod::nonlocal_average,
+             ExcMessage("edge_states: the nonlocal average needs its "
+                        "weights (NonlocalAverage)."));
+      return edge_states(
+        edges,
+        vertices,
         method == EdgeStressMethod::cell_average ?
           cell_average_edge_stresses(edges, cell_stresses) :
           nodal_average_edge_stresses(edges,
                                       nodal_stresses(triangles,
                                                      cell_stresses,
                                                      cell_areas,
-                                                     vertices.size()));
+                                                     vertices.size())));
+    }
+
+
+
+    std::vector<EdgeState>
+    edge_states(const std::vector<InteriorEdge>          &edges,
+                const std::vector<Point<2>>              &vertices,
+                const std::vector<SymmetricTensor<2, 2>> &stresses)
+    {
+      AssertDimension(stresses.size(), edges.size());
       std::vector<EdgeState> states(edges.size());
       for (unsigned int e = 0; e < edges.size(); ++e)
         states[e] = edge_state(stresses[e],

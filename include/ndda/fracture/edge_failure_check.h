@@ -7,6 +7,7 @@
 
 #include <ndda/fracture/edge_stress.h>
 #include <ndda/fracture/fracture_criterion.h>
+#include <ndda/fracture/nonlocal_average.h>
 #include <ndda/mesh/crackable_mesh.h>
 
 #include <array>
@@ -63,13 +64,17 @@ namespace ndda
        * from @p cell_material, is set), except cracks that are closed at
        * both tips, and except edges of cells that @p may_crack excludes
        * (if not empty: the cells of blocks that are not meshed); the
-       * strength of an edge is the weaker of its two cells'.
+       * strength of an edge is the weaker of its two cells'. A positive
+       * @p nonlocal_radius computes the weights of the nonlocal average
+       * (EdgeStressMethod::nonlocal_average) on the initial geometry,
+       * keeping the rows far from any crack made since the last call.
        */
       void
       setup(const CrackableMesh                        &mesh,
             const std::vector<unsigned int>            &cell_material,
             const std::vector<std::optional<Strength>> &material_strength,
-            const std::vector<bool>                    &may_crack = {});
+            const std::vector<bool>                    &may_crack       = {},
+            const double                                nonlocal_radius = 0.);
 
       /** Whether some material of the scene fractures. */
       bool
@@ -129,8 +134,11 @@ namespace ndda
       bool                      any_material_fractures = false;
       std::vector<InteriorEdge> edges;
       std::vector<Strength>     strength;
-      FailureRecord             first;
-      unsigned int              n_failing = 0;
+      /// Weights of the nonlocal edge stress (set up for a positive radius).
+      NonlocalAverage nonlocal;
+      bool            has_nonlocal = false;
+      FailureRecord   first;
+      unsigned int    n_failing = 0;
     };
   } // namespace fracture
 } // namespace ndda

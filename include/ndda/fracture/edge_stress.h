@@ -71,7 +71,11 @@ namespace ndda
       /// stress being the area-weighted mean of the cells around the vertex
       /// (thesis 8.2 recommends nodal stresses for smoother crack paths;
       /// the thesis does not define them, see doc/fracture.md).
-      nodal_average
+      nodal_average,
+      /// Weighted mean of the cell stresses within a material radius of
+      /// the edge's midpoint (NonlocalAverage): a length scale for crack
+      /// initiation (doc/fracture.md).
+      nonlocal_average
     };
 
     /**
@@ -155,12 +159,21 @@ namespace ndda
       const std::vector<SymmetricTensor<2, 2>> &nodal_stresses);
 
     /**
-     * The state of every edge: its stress tensor by @p method and the normal
-     * and shear stress on it at the given vertex positions. Call it once
-     * with the positions and stresses at the start of the step and once
-     * with those at the end, with the same @p edges, so that the i-th
-     * states of the two calls belong to the same edge. O(number of
-     * triangles).
+     * The state of every edge: its stress tensor @p edge_stresses and the
+     * normal and shear stress on it at the given vertex positions. Call it
+     * once with the positions and stresses at the start of the step and
+     * once with those at the end, with the same @p edges, so that the i-th
+     * states of the two calls belong to the same edge.
+     */
+    std::vector<EdgeState>
+    edge_states(const std::vector<InteriorEdge>          &edges,
+                const std::vector<Point<2>>              &vertices,
+                const std::vector<SymmetricTensor<2, 2>> &edge_stresses);
+
+    /**
+     * As above with the edge stresses formed by @p method from the cell
+     * stresses; @p method must be cell_average or nodal_average (the
+     * nonlocal average needs its weights, NonlocalAverage).
      *
      * @param edges Interior edges, from find_interior_edges().
      * @param vertices Vertex positions.

@@ -216,9 +216,13 @@ namespace ndda
      */
     struct Fracture
     {
-      /// `set Edge stress = cell average | nodal average`.
+      /// `set Edge stress = cell average | nodal average | nonlocal
+      /// average`.
       fracture::EdgeStressMethod edge_stress_method =
         fracture::EdgeStressMethod::cell_average;
+      /// `set Nonlocal radius`: the radius R (m) of the nonlocal average;
+      /// positive exactly when the edge stress is the nonlocal average.
+      double nonlocal_radius = 0;
       /// Name of the selected criterion, `set Criterion = ...`.
       std::string criterion_name;
       /// Split failing edges (else only count them).
