@@ -3,7 +3,6 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <ndda/base/stage_reporter.h>
-#include <ndda/mesh/state_transfer.h>
 #include <ndda/physics/free_bodies.h>
 #include <ndda/scene/scene.h>
 #include <ndda/simulator.h>
@@ -454,105 +453,6 @@ namespace ndda
 
 
   template <int dim>
-  std::vector<std::array<unsigned int, 2>>
-  Simulator<dim>::check_fracture(const Vector<double> &d, const double dt)
-  {
-    SectionTimer::Scope scope(timer, "fracture check");
-    const auto         &block_mesh = mesh.get_block_mesh();
-    // The step's trial end: vertices moved by the increment, stresses
-    // advanced by it (as commit_step() will do, if no edge cracks).
-    std::vector<Point<dim>> end_vertices = block_mesh.vertices;
-    const auto              increment    = fem.dof_map.vertex_values(d);
-    for (unsigned int v = 0; v < end_vertices.size(); ++v)
-      end_vertices[v] += increment[v];
-    return fracture_check.check(parameters.fracture,
-                                block_mesh.triangles,
-                                stresses.cell_areas(),
-                                {block_mesh.vertices, stresses.cell_means()},
-                                {end_vertices, stresses.trial_cell_means(d)},
-                                time,
-                                dt);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::crack_edges(
-    const std::vector<std::array<unsigned int, 2>> &edges)
-  {
-    SectionTimer::Scope scope(timer, "crack");
-    // What the old dof numbering carries, before crack() empties the
-    // DoFHandler: dof vectors by cell, the acceleration as M a over the
-    // lumped mass.
-    const std::vector<types::global_dof_index> old_cell_dofs =
-      fem.dof_map.cell_dofs;
-    const Vector<double> acceleration =
-      fem.linear_system.lumped_acceleration(kinematics.inertia_force);
-    const Vector<double>          old_displacement(displacement);
-    const Vector<double>          old_velocity(kinematics.velocity);
-    const Vector<double>          old_acceleration(kinematics.acceleration);
-    const std::vector<double>     bolt_forces = fem.bolts.axial_forces();
-    const contact::ContactHandler old_contacts(contacts);
-
-    const CrackResult cracked = mesh.crack(edges);
-    n_cracked_edges += edges.size();
-    for (const auto &edge : cracked.cracked_edges)
-      automatic.mark_cracked({edge.cells[0], edge.cells[1]});
-
-    setup_dofs(false);
-    const auto transfer = [&](const Vector<double> &old, Vector<double> &now) {
-      now.reinit(fem.dof_handler.n_dofs());
-      state_transfer::transfer_dof_values(old_cell_dofs,
-                                          old,
-                                          fem.dof_map.cell_dofs,
-                                          now);
-    };
-    transfer(old_displacement, displacement);
-    transfer(old_velocity, kinematics.velocity);
-    if (old_acceleration.size() > 0)
-      transfer(old_acceleration, kinematics.acceleration);
-    Vector<double> new_acceleration;
-    transfer(acceleration, new_acceleration);
-    // Constraints, bolts, loads and measure points are found by position
-    // on the scene's initial geometry.
-    mesh.on_initial_geometry([&]() {
-      fem.setup_constraints(parameters);
-      fem.bolts.set_axial_forces(bolt_forces);
-      fem.setup_loads(parameters);
-      measure_points.setup(
-        mesh, *fem.fe, fem.dof_map, parameters.output.measure_points, true);
-    });
-    fem.setup_system(parameters);
-    setup_contacts();
-    if (parameters.contact.enabled)
-      contacts.carry_memory_from(old_contacts);
-    fracture_check.setup(mesh,
-                         fem.cell_material,
-                         ndda::parameters::material_strengths(
-                           parameters.materials),
-                         fem.meshed_cells(),
-                         parameters.fracture.nonlocal_radius);
-
-    // A crack changes no cell's shape (cells keep their index, vertex
-    // order and geometry; only dof numbers change): element matrices are
-    // recomputed only for cells that moved beyond the tolerance since
-    // their last computation, as in any step. Then global matrices,
-    // gravity, internal force, loaded faces, and M a on the new mesh.
-    setup_automatic_kinematics();
-    fem.update_matrices(parameters, true, displacement, stresses, true);
-    ++n_matrix_rebuilds;
-    compute_internal_force();
-    kinematics.inertia_force =
-      fem.linear_system.lumped_inertia_force(new_acceleration);
-    external_force.reinit(fem.dof_handler.n_dofs());
-    assemble_external_force(time, external_force);
-    fem.linear_system.invalidate();
-  }
-
-
-
-  template <int dim>
   void
   Simulator<dim>::prepare_step()
   {
@@ -687,7 +587,9 @@ namespace ndda
           }
         if (parameters.contact.enabled)
           contacts.set_normal_stiffness(start_stiffness);
-        crack_edges(failing);
+        crack_edges(parameters.fracture.align_crack_paths ?
+                      advance_crack_tips(failing, d) :
+                      failing);
         ++crack_events;
       }
     commit_step(d, dt);

@@ -25,6 +25,7 @@
 #include <ndda/contact/contact_handler.h>
 #include <ndda/contact/detection_distance.h>
 #include <ndda/contact/open_close_solver.h>
+#include <ndda/fracture/crack_tips.h>
 #include <ndda/fracture/edge_failure_check.h>
 #include <ndda/kinematics/automatic_kinematics.h>
 #include <ndda/mesh/crackable_mesh.h>
@@ -381,6 +382,16 @@ namespace ndda
       return n_cracked_edges;
     }
 
+    /**
+     * Every advance of a crack tip since the start of this run (`Crack
+     * path = maximum tangential stress`; not kept in checkpoints).
+     */
+    const std::vector<fracture::TipAdvance> &
+    get_tip_advances() const
+    {
+      return tip_advances;
+    }
+
     /** What the last time step did, for the statistics. */
     struct StepReport
     {
@@ -536,6 +547,17 @@ namespace ndda
     std::vector<std::array<unsigned int, 2>>
     check_fracture(const Vector<double> &d, const double dt);
     /**
+     * `Crack path = maximum tangential stress`: turn the @p failing edges
+     * into tip advances (fracture::plan_crack_advance()), move the vertices
+     * the plan moves and carry the state to them
+     * (state_transfer::interpolate_moved()), record the advances. Returns
+     * the edges crack_edges() must crack. @p d: the step's trial
+     * increment, in which the edges failed.
+     */
+    std::vector<std::array<unsigned int, 2>>
+    advance_crack_tips(const std::vector<std::array<unsigned int, 2>> &failing,
+                       const Vector<double>                           &d);
+    /**
      * Accept the increment @p d of a step of length @p dt: contacts,
      * velocity and acceleration (by the integrator), stresses, bolts, work
      * of the loads, internal force, displacement, vertex positions, time.
@@ -648,9 +670,11 @@ namespace ndda
     ndda::kinematics::AutomaticKinematics automatic;
 
     fracture::EdgeFailureCheck fracture_check;
-    unsigned int               n_crack_events  = 0;
-    unsigned int               n_cracked_edges = 0;
-    bool                       crack_limit_hit = false;
+    /// See get_tip_advances().
+    std::vector<fracture::TipAdvance> tip_advances;
+    unsigned int                      n_crack_events  = 0;
+    unsigned int                      n_cracked_edges = 0;
+    bool                              crack_limit_hit = false;
 
     StepReport step_report;
     /// Rows not yet written (mutable: writing them forgets them).

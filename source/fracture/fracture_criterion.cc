@@ -178,6 +178,21 @@ namespace ndda
           "step; when it is reached the step is accepted with the edges "
           "that still fail, and the statistics file says so ('Crack limit "
           "hit').");
+        prm.declare_entry(
+          "Crack path",
+          "mesh edges",
+          Patterns::Selection("mesh edges|maximum tangential stress"),
+          "How a crack grows from a tip inside a block. mesh edges: the "
+          "edges that fail crack, whatever their direction (thesis 5.3). "
+          "maximum tangential stress: an edge that fails near a crack tip "
+          "(within the nonlocal radius or two edge lengths of it) makes "
+          "the tip advance instead, in the direction of the maximum "
+          "tangential stress (thesis 7.11) for the ratio K_II/K_I that the "
+          "opening and sliding of the crack's last faces give; a vertex "
+          "ahead of the tip is moved onto that direction and the edge to it "
+          "cracks, so the path does not follow the mesh "
+          "(doc/fracture.md, 'Crack paths free of the mesh'). Edges that "
+          "fail away from tips crack as with mesh edges.");
         fracture::FractureCriterionRegistry::declare_parameters(prm);
       }
       prm.leave_subsection();
@@ -211,6 +226,8 @@ namespace ndda
         split_edges      = prm.get_bool("Split edges");
         crack_window     = prm.get_double("Crack window");
         max_crack_events = prm.get_integer("Maximum crack events per step");
+        align_crack_paths =
+          prm.get("Crack path") == "maximum tangential stress";
         criterion =
           fracture::FractureCriterionRegistry::create_and_parse(criterion_name,
                                                                 prm);

@@ -95,6 +95,12 @@ namespace ndda
           for (const auto &pair : difference)
             for (const unsigned int c : pair)
               changed.push_back(centroid[c]);
+          for (unsigned int c = 0; c < n_cells; ++c)
+            if (centroid[c] != last_centroid[c])
+              {
+                changed.push_back(centroid[c]);
+                changed.push_back(last_centroid[c]);
+              }
         }
       std::vector<unsigned int> old_row_order(row_cells.size());
       for (unsigned int r = 0; r < old_row_order.size(); ++r)
@@ -199,6 +205,7 @@ namespace ndda
         }
       row_cells      = std::move(now_rows);
       passable_cells = std::move(now_passable);
+      last_centroid  = centroid;
       last_radius    = radius;
       last_n_cells   = n_cells;
     }

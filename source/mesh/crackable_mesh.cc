@@ -514,6 +514,27 @@ namespace ndda
 
 
 
+  void
+  CrackableMesh::relocate_vertices(
+    const std::vector<unsigned int> &moved,
+    const std::vector<Point<2>>     &position,
+    const std::vector<Point<2>>     &initial_position)
+  {
+    AssertDimension(moved.size(), position.size());
+    AssertDimension(moved.size(), initial_position.size());
+    auto &vertices =
+      const_cast<std::vector<Point<2>> &>(triangulation.get_vertices());
+    for (unsigned int i = 0; i < moved.size(); ++i)
+      {
+        AssertIndexRange(moved[i], vertices.size());
+        vertices[moved[i]]            = position[i];
+        block_mesh.vertices[moved[i]] = position[i];
+        initial_vertices[moved[i]]    = initial_position[i];
+      }
+  }
+
+
+
   bool
   CrackableMesh::inverts_a_cell(
     const std::vector<Tensor<1, 2>> &displacement) const

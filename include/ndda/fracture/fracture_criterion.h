@@ -232,6 +232,11 @@ namespace ndda
       double crack_window = 0;
       /// Crack events per step at most.
       unsigned int max_crack_events = 50;
+      /// `set Crack path`: true for `maximum tangential stress` (a failure
+      /// near a crack tip advances the tip in the direction of the maximum
+      /// tangential stress, the mesh aligned to it: fracture/crack_tips.h),
+      /// false for `mesh edges` (the failing edge cracks, thesis 5.3).
+      bool align_crack_paths = false;
       /// The selected criterion with its parameters read; stateless, so it
       /// may be shared.
       std::shared_ptr<const fracture::FractureCriterion> criterion;

@@ -95,7 +95,10 @@ namespace ndda
       unsigned int                             last_n_cells = 0;
       std::vector<std::array<unsigned int, 2>> row_cells;
       std::vector<std::array<unsigned int, 2>> passable_cells;
-      unsigned int                             n_computed = 0;
+      /// The cells' centroids last time: a cell that moved (a vertex
+      /// relocated ahead of a crack tip) changes the rows around it.
+      std::vector<dealii::Point<2>> last_centroid;
+      unsigned int                  n_computed = 0;
 
       /// Compressed rows: the cells and normalised weights of edge e are
       /// at [offsets[e], offsets[e + 1]).

@@ -229,6 +229,19 @@ namespace ndda
     void
     move_vertices(const std::vector<Tensor<1, 2>> &displacement);
 
+    /**
+     * Move vertices @p moved to @p position (present geometry) and give
+     * them the initial positions @p initial_position: the vertex now stands
+     * for another point of the material (a crack tip's mesh aligned to
+     * its path, fracture::plan_crack_advance()). The triangles stay the
+     * same; the caller makes sure none turns inside out, and carries the
+     * state to the new positions (state_transfer::interpolate_moved()).
+     */
+    void
+    relocate_vertices(const std::vector<unsigned int> &moved,
+                      const std::vector<Point<2>>     &position,
+                      const std::vector<Point<2>>     &initial_position);
+
     /** Put every vertex at the given position, exactly. */
     void
     set_vertices(const std::vector<Point<2>> &vertices);

@@ -3,8 +3,14 @@
 #define ndda_mesh_state_transfer_h
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <deal.II/fe/fe.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <array>
 #include <string>
 #include <vector>
 
@@ -89,6 +95,33 @@ namespace ndda
       for (std::size_t k = 0; k < new_cell_dofs.size(); ++k)
         new_values[new_cell_dofs[k]] = old_values[old_cell_dofs[k]];
     }
+
+    /**
+     * Carry dof vectors across a move of vertices that keeps the triangles
+     * (CrackableMesh::relocate_vertices()): every degree of freedom whose
+     * support point moves takes the value of the old field (the old
+     * vertices, the same dof values) at its new support point, found in
+     * the triangles around the moved vertices; all others keep their
+     * value. Exact for fields the element represents on the old mesh
+     * restricted to where the new support points fall; a node at a moved
+     * vertex gets the linear (P1) or quadratic (P2) interpolant of the old
+     * field there. The element must have support points; cells map
+     * linearly (the reference triangle's vertices 0, 1, 2 to the cell's).
+     *
+     * @param cell_dofs Dofs of every cell, cell after cell (DofMap).
+     * @param moved The moved vertices; @p old_vertices and @p new_vertices
+     *   are all positions before and after.
+     * @param vectors The dof vectors to carry, changed in place.
+     */
+    void
+    interpolate_moved(
+      const dealii::FiniteElement<2>                     &fe,
+      const std::vector<dealii::types::global_dof_index> &cell_dofs,
+      const std::vector<std::array<unsigned int, 3>>     &triangles,
+      const std::vector<unsigned int>                    &moved,
+      const std::vector<dealii::Point<2>>                &old_vertices,
+      const std::vector<dealii::Point<2>>                &new_vertices,
+      const std::vector<dealii::Vector<double> *>        &vectors);
   } // namespace state_transfer
 } // namespace ndda
 
