@@ -136,8 +136,13 @@ namespace ndda
     const auto              increment = fem.dof_map.vertex_values(d);
     for (unsigned int v = 0; v < trial.size(); ++v)
       trial[v] += increment[v];
-    auto plan = fracture::plan_crack_advance(
-      mesh, failing, trial, parameters.fracture.nonlocal_radius, fixed);
+    auto plan =
+      fracture::plan_crack_advance(mesh,
+                                   failing,
+                                   trial,
+                                   parameters.fracture.nonlocal_radius,
+                                   fracture_check.get_edges(),
+                                   fixed);
     if (!plan.moved.empty())
       {
         // The state goes with the material: the fields at the new

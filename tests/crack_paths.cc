@@ -33,6 +33,10 @@
 // the flaw (40 mm). Asserted: the wings' direction there (the chord over
 // the path's last quarter of a flaw length) within 15 degrees of the axis
 // of compression (issue 18's target), plus the mesh checks below.
+// And the Brazilian disc with a central crack at 45 degrees
+// (prm/brazilian_disc_crack.prm, thesis 7.5.3): the crack is pressed shut
+// and sheared; asserted: kinks within 5 degrees of 70.53, each wing ends
+// within 0.2 R of its loaded point.
 // NDDA_DEBUG_ADVANCES=1 in the environment prints every advance.
 //
 // Asserted:
@@ -188,9 +192,10 @@ namespace
   };
 
   /**
-   * Run @p scene (a `prm/` example with one block `specimen` and one
-   * crack) on @p mesh_size with `Crack path = maximum tangential stress`
-   * until the specimen is in two large pieces (a tenth of the cells at
+   * Run @p scene (a `prm/` example whose first block, @p block, has one
+   * crack) on @p mesh_size (0: the scene's) with `Crack path = maximum
+   * tangential stress`, @p holes in the block and @p fracture's entries,
+   * until the block is in two large pieces (a tenth of its cells at
    * least), or both wings are @p stop_length long (if positive), or the
    * scene's end time.
    */
@@ -199,13 +204,15 @@ namespace
       const double       mesh_size,
       const double       stop_length = 0,
       const std::string &holes       = "",
-      const std::string &fracture    = "")
+      const std::string &fracture    = "",
+      const std::string &block       = "specimen")
   {
     RunResult   result;
     std::string text = read_example(scene);
-    text += "subsection Geometry\n  subsection specimen\n"
-            "    set Mesh size = " +
-            std::to_string(mesh_size) + "\n" +
+    text += "subsection Geometry\n  subsection " + block + "\n" +
+            (mesh_size > 0 ?
+               "    set Mesh size = " + std::to_string(mesh_size) + "\n" :
+               "") +
             (holes.empty() ? "" : "    set Holes = " + holes + "\n") +
             "  end\nend\n"
             "subsection Fracture\n"
@@ -242,16 +249,22 @@ namespace
                   << mesh.get_block_mesh().vertices[tip.vertex] * 1e3
                   << " mm, x' " << tip.outward << std::endl;
 
+    // The cells of the cracked block (the scene's first; plates are not
+    // counted).
+    std::vector<unsigned int> specimen;
+    for (unsigned int c = 0; c < result.n_cells; ++c)
+      if (mesh.block_of_cell(c) == 0)
+        specimen.push_back(c);
     const double end_time = parameters.control.end_time;
     while (simulator.get_time() < end_time - 1e-12)
       {
         simulator.do_time_step();
         std::map<unsigned int, unsigned int> cells_of_block;
-        for (unsigned int c = 0; c < result.n_cells; ++c)
+        for (const unsigned int c : specimen)
           ++cells_of_block[mesh.block_of_cell(c)];
         unsigned int n_large = 0;
         for (const auto &[b, n] : cells_of_block)
-          n_large += n > result.n_cells / 10 ? 1 : 0;
+          n_large += n > specimen.size() / 10 ? 1 : 0;
         if (n_large >= 2)
           {
             result.separated       = true;
@@ -517,6 +530,34 @@ main(int argc, char **argv)
         if (y < 0.07)
           check(to_hole < 1e-4, "the upper wing runs into the hole");
       }
+
+  // The Brazilian disc with a central crack at 45 degrees (thesis 7.5.3,
+  // prm/brazilian_disc_crack.prm, its 2.2 mm mesh): the crack is pressed
+  // shut and sheared (K_I = 0, K_II < 0: kink +70.53 degrees at both
+  // tips); the wings run to the loaded points (0, +-R).
+  if (argc == 1)
+    {
+      const RunResult   r   = run("brazilian_disc_crack", 0, 0, "", "", "disc");
+      const std::string key = "crack_paths.disc.";
+      report(key, 0.0022, r, 70.53);
+      check(r.area_change < 1e-12,
+            "disc: the area in the initial geometry is kept to 1e-12");
+      check(r.faces_cracked, "disc: every advance's edge is a crack face");
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const auto    &tip = r.tips[k];
+          const Point<2> loaded(0, k == 0 ? 0.025 : -0.025);
+          const double   off = tip.path.back().distance(loaded);
+          std::cout << "  " << (k == 0 ? "upper" : "lower") << " wing ends "
+                    << off * 1e3 << " mm from the loaded point" << std::endl;
+          record(key + (k == 0 ? "upper." : "lower.") + "off", off * 1e3, 2);
+          check(tip.found, "disc: a wing starts at each tip vertex");
+          check(std::abs(tip.kink - 70.53) < 5,
+                "disc: the kink is within 5 degrees of the MTS angle");
+          check(off < 0.2 * 0.025,
+                "disc: each wing ends within 0.2 R of its loaded point");
+        }
+    }
 
   if (compression_mesh > 0)
     {

@@ -14,7 +14,8 @@
 //     advance along the MTS angle: a vertex ahead is moved so that the edge
 //     lies on that angle to 1e-12; the triangles stay counter-clockwise, the
 //     area stays to 1e-14, and after the crack the new tip lies there with
-//     x' along the path; a failing edge far from both tips is kept;
+//     x' along the path; a failing edge far from both tips is kept; only
+//     an edge that may crack is taken;
 //  4. interpolate_moved() gives, for P1 and P2 (two components), the
 //     element's own fields (linear, quadratic) at the moved support points
 //     exactly, and leaves the other dofs alone.
@@ -249,7 +250,25 @@ main(int argc, char **argv)
   const std::vector<std::array<unsigned int, 2>> failing = {
     {{vertex_at(mesh, Point<2>(3, 3)), vertex_at(mesh, Point<2>(4, 3))}},
     {{vertex_at(mesh, Point<2>(5, 0)), vertex_at(mesh, Point<2>(5, 1))}}};
-  const auto plan = fracture::plan_crack_advance(mesh, failing, moved, 0., {});
+  const auto crackable =
+    fracture::find_interior_edges(mesh.get_block_mesh().triangles,
+                                  mesh.get_block_mesh().vertices.size());
+  // Only the edge straight ahead may crack: the tip advances along it,
+  // its far vertex moved onto the MTS angle.
+  const unsigned int ahead = vertex_at(mesh, Point<2>(4, 3));
+  const auto         only_ahead =
+    fracture::plan_crack_advance(mesh,
+                                 failing,
+                                 moved,
+                                 0.,
+                                 {{{{vertex_at(mesh, Point<2>(3, 3)), ahead}},
+                                   {{0, 0}}}},
+                                 {});
+  check(only_ahead.advances.size() == 1 &&
+          only_ahead.advances[0].target == ahead,
+        "a tip advances only along an edge that may crack");
+  const auto plan =
+    fracture::plan_crack_advance(mesh, failing, moved, 0., crackable, {});
   check(plan.advances.size() == 1 && plan.moved.size() == 1 &&
           plan.edges.size() == 2,
         "one advance with a vertex moved; the far edge kept");

@@ -225,8 +225,21 @@ namespace ndda
                        const std::vector<std::array<unsigned int, 2>> &failing,
                        const std::vector<dealii::Point<2>> &trial_vertices,
                        const double                         zone_radius,
+                       const std::vector<InteriorEdge>     &crackable,
                        const std::vector<bool>             &fixed)
     {
+      std::vector<std::uint64_t> may_crack;
+      may_crack.reserve(crackable.size());
+      for (const auto &edge : crackable)
+        may_crack.push_back(key(std::min(edge.vertices[0], edge.vertices[1]),
+                                std::max(edge.vertices[0], edge.vertices[1])));
+      std::sort(may_crack.begin(), may_crack.end());
+      const auto crackable_edge = [&](const unsigned int a,
+                                      const unsigned int b) {
+        return std::binary_search(may_crack.begin(),
+                                  may_crack.end(),
+                                  key(std::min(a, b), std::max(a, b)));
+      };
       const auto &block_mesh = mesh.get_block_mesh();
       const auto &initial    = mesh.get_initial_vertices();
       // Positions as moves of this plan leave them.
@@ -252,8 +265,12 @@ namespace ndda
         return n;
       };
 
-      // Each failing edge goes to the nearest tip whose zone holds its
-      // midpoint, or is cracked as it is.
+      // Each failing edge goes to the nearest tip of its block whose zone
+      // holds its midpoint, or is cracked as it is. (Blocks share no
+      // vertices: a vertex's block is that of any cell at it.)
+      const auto block_of = [&](const unsigned int v) {
+        return block_mesh.cell_block[adjacency.cells[adjacency.offsets[v]]];
+      };
       std::vector<double> zone(tips.size());
       for (unsigned int k = 0; k < tips.size(); ++k)
         {
@@ -275,7 +292,8 @@ namespace ndda
           for (unsigned int k = 0; k < tips.size(); ++k)
             {
               const double r = m.distance(x[tips[k].vertex]);
-              if (r <= zone[k] && r < best)
+              if (r <= zone[k] && r < best &&
+                  block_of(tips[k].vertex) == block_of(edge[0]))
                 {
                   best    = r;
                   nearest = k;
@@ -308,7 +326,7 @@ namespace ndda
             std::vector<std::pair<double, unsigned int>> candidates;
             for (const unsigned int w : neighbours(t))
               if (adjacency.has_side(t, w) && adjacency.has_side(w, t) &&
-                  !mesh.is_cracked(t, w))
+                  !mesh.is_cracked(t, w) && crackable_edge(t, w))
                 candidates.emplace_back(
                   std::abs(angle_from(direction, x[w] - x[t])), w);
             if (candidates.empty())
@@ -331,8 +349,15 @@ namespace ndda
                 if (moved[w] || (!fixed.empty() && fixed[w]) ||
                     !adjacency.is_interior(block_mesh, w))
                   continue;
-                const auto star      = cells_at(w);
-                double     old_worst = M_PI;
+                const auto star = cells_at(w);
+                if (std::any_of(star.begin(),
+                                star.end(),
+                                [&](const unsigned c) {
+                                  return block_mesh.cell_material[c] !=
+                                         block_mesh.cell_material[star.front()];
+                                }))
+                  continue;
+                double old_worst = M_PI;
                 for (const unsigned int c : star)
                   {
                     const auto &tri = block_mesh.triangles[c];

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <ndda/fracture/edge_stress.h>
 #include <ndda/mesh/crackable_mesh.h>
 
 #include <array>
@@ -120,16 +121,17 @@ namespace ndda
      * Turn failing edges into crack growth that follows the stress
      * (`Crack path = maximum tangential stress`, doc/fracture.md). A
      * failing edge whose midpoint lies within the tip zone of a crack tip
+     * of its block
      * (radius max(@p zone_radius, twice the mean length of the tip's
      * edges), nearest tip) is not cracked: the tip advances instead, once
      * per event. The direction d is the maximum tangential stress angle
-     * for the tip's stress intensity ratio. Among the uncracked interior
-     * edges from the tip, the one nearest to d in angle cracks; if it is
+     * for the tip's stress intensity ratio. Among the edges from the tip
+     * that may crack, the one nearest to d in angle cracks; if it is
      * more than 0.5 degrees off, its far vertex is first moved onto the ray
      * from the tip along d (at its distance from the tip, or 0.8, 1.2, 0.6,
-     * 1.4, 0.5 times that), provided it is an interior vertex of its block, not
-     * in
-     * @p fixed, not moved yet in this event, and the triangles around it
+     * 1.4, 0.5 times that), provided it is an interior vertex of its
+     * block, not in @p fixed, inside one material, not moved yet in this
+     * event, and the triangles around it
      * stay counter-clockwise with their smallest angle at least
      * min(15 degrees, the smallest angle they had). The next-nearest edges
      * are tried in turn (up to 60 degrees off d); if no vertex may move,
@@ -143,14 +145,19 @@ namespace ndda
      *   solved (the state the failure was found in): the faces' jump is
      *   read there, so that a tip created earlier in the same step (whose
      *   faces have not opened in the present geometry) has its own ratio.
+     * @param crackable The edges that may crack (both cells of a
+     *   fracturing material: EdgeFailureCheck::get_edges()); a tip
+     *   advances only along one of them.
      * @param fixed Vertices that must not move (constraints, bolt
-     *   anchors); empty: none.
+     *   anchors); empty: none. A vertex between cells of different
+     *   materials does not move either (the interface would).
      */
     AdvancePlan
     plan_crack_advance(const CrackableMesh                            &mesh,
                        const std::vector<std::array<unsigned int, 2>> &failing,
                        const std::vector<dealii::Point<2>> &trial_vertices,
                        const double                         zone_radius,
+                       const std::vector<InteriorEdge>     &crackable,
                        const std::vector<bool>             &fixed);
   } // namespace fracture
 } // namespace ndda
