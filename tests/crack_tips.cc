@@ -40,48 +40,20 @@
 #include <cmath>
 #include <iostream>
 
+#include "grids.h"
 #include "tests.h"
 
 using namespace ndda;
 using dealii::Point;
 using dealii::Tensor;
 using ndda_tests::check;
+using ndda_tests::Field;
+using ndda_tests::unit_grid;
+using ndda_tests::vertex_at;
 
 namespace
 {
   constexpr double degree = M_PI / 180;
-
-  geometry::BlockMesh
-  grid(const unsigned int n)
-  {
-    geometry::BlockMesh mesh;
-    mesh.block_names = {"grid"};
-    for (unsigned int j = 0; j <= n; ++j)
-      for (unsigned int i = 0; i <= n; ++i)
-        mesh.vertices.emplace_back(i, j);
-    const auto v = [&](const unsigned int i, const unsigned int j) {
-      return j * (n + 1) + i;
-    };
-    for (unsigned int j = 0; j < n; ++j)
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          mesh.triangles.push_back({{v(i, j), v(i + 1, j), v(i + 1, j + 1)}});
-          mesh.triangles.push_back({{v(i, j), v(i + 1, j + 1), v(i, j + 1)}});
-        }
-    mesh.cell_block.assign(mesh.triangles.size(), 0);
-    mesh.cell_material.assign(mesh.triangles.size(), 0);
-    return mesh;
-  }
-
-  unsigned int
-  vertex_at(const CrackableMesh &mesh, const Point<2> &p)
-  {
-    const auto &x = mesh.get_block_mesh().vertices;
-    for (unsigned int v = 0; v < x.size(); ++v)
-      if (x[v].distance(p) < 1e-12)
-        return v;
-    return dealii::numbers::invalid_unsigned_int;
-  }
 
   double
   total_area(const geometry::BlockMesh &mesh)
@@ -96,32 +68,11 @@ namespace
     return sum;
   }
 
-  class Field : public dealii::Function<2>
-  {
-  public:
-    Field(const unsigned int degree)
-      : dealii::Function<2>(2)
-      , degree(degree)
-    {}
-
-    double
-    value(const Point<2> &p, const unsigned int component) const override
-    {
-      const double x = p[0], y = p[1];
-      if (component == 0)
-        return 1 + 2 * x - y + (degree == 2 ? x * x + 2 * x * y : 0.);
-      return 3 * y - x + (degree == 2 ? y * y - 0.5 * x * y : 0.);
-    }
-
-  private:
-    const unsigned int degree;
-  };
-
   void
   check_interpolation(const unsigned int degree)
   {
     CrackableMesh mesh;
-    mesh.build(grid(4));
+    mesh.build(unit_grid(4));
     const dealii::FESystem<2>  fe(dealii::FE_SimplexP<2>(degree), 2);
     dealii::DoFHandler<2>      dofs(mesh.get_triangulation());
     const dealii::MappingFE<2> mapping(dealii::FE_SimplexP<2>(1));
@@ -216,7 +167,7 @@ main(int argc, char **argv)
 
   // 2. Tips.
   CrackableMesh mesh;
-  mesh.build(grid(6));
+  mesh.build(unit_grid(6));
   mesh.crack(
     {{{vertex_at(mesh, Point<2>(1, 3)), vertex_at(mesh, Point<2>(2, 3))}},
      {{vertex_at(mesh, Point<2>(2, 3)), vertex_at(mesh, Point<2>(3, 3))}}});

@@ -514,6 +514,30 @@ namespace ndda
 
 
 
+  refinement::RefineResult
+  CrackableMesh::refine(
+    const std::function<double(unsigned int, const Point<2> &)> &size_bound,
+    const unsigned int                                           max_cells)
+  {
+    geometry::BlockMesh   mesh    = block_mesh;
+    std::vector<Point<2>> initial = initial_vertices;
+    auto                  result =
+      refinement::bisect_to_size(mesh, initial, size_bound, max_cells);
+    if (result.n_bisections == 0)
+      return result;
+    check(mesh);
+    {
+      geometry::BlockMesh at_start = mesh;
+      at_start.vertices            = initial;
+      check(at_start);
+    }
+    initial_vertices.swap(initial);
+    install(std::move(mesh));
+    return result;
+  }
+
+
+
   void
   CrackableMesh::relocate_vertices(
     const std::vector<unsigned int> &moved,

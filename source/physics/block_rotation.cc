@@ -339,6 +339,20 @@ namespace ndda
 
 
   void
+  BlockFrames::carry_to_cells(const std::vector<unsigned int> &cell_origin)
+  {
+    std::vector<double> carried(cell_origin.size());
+    for (unsigned int c = 0; c < cell_origin.size(); ++c)
+      {
+        AssertIndexRange(cell_origin[c], angle.size());
+        carried[c] = angle[cell_origin[c]];
+      }
+    angle.swap(carried);
+  }
+
+
+
+  void
   BlockFrames::setup(const CrackableMesh &mesh,
                      const DofMap        &dof_map,
                      const Constraints   &constraints,

@@ -8,6 +8,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <ndda/geometry/block_mesh.h>
+#include <ndda/mesh/refinement.h>
 
 #include <array>
 #include <cstdint>
@@ -209,6 +210,27 @@ namespace ndda
      */
     CrackResult
     crack(const std::vector<std::array<unsigned int, 2>> &edges);
+
+    /**
+     * Refine the mesh by longest-edge bisection until the longest edge of
+     * every cell is at most @p size_bound(block, centroid)
+     * (refinement::bisect_to_size(): new vertices are edge midpoints in
+     * the present and the initial geometry, the two faces of an open crack
+     * are bisected together), check it in both geometries and rebuild the
+     * triangulation
+     * as crack() does (the DoFHandler needs distribute_dofs() again). A
+     * bisected cell keeps its index for one half and the other half is
+     * appended; blocks and materials stay, a bisected crack face becomes
+     * two in get_block_mesh().crack_edges. If no cell is too
+     * large, nothing changes (no rebuild).
+     *
+     * @param max_cells Refuse (ExcMessage, mesh unchanged) to make more
+     *   cells than this.
+     */
+    refinement::RefineResult
+    refine(
+      const std::function<double(unsigned int, const Point<2> &)> &size_bound,
+      const unsigned int                                           max_cells);
 
     /**
      * Whether the edge between vertices @p a and @p b (in either order) is

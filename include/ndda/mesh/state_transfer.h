@@ -4,11 +4,15 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/types.h>
 
 #include <deal.II/fe/fe.h>
 
 #include <deal.II/lac/vector.h>
+
+#include <ndda/mesh/refinement.h>
 
 #include <array>
 #include <string>
@@ -122,6 +126,52 @@ namespace ndda
       const std::vector<dealii::Point<2>>                &old_vertices,
       const std::vector<dealii::Point<2>>                &new_vertices,
       const std::vector<dealii::Vector<double> *>        &vectors);
+
+    /**
+     * Dof vectors on a mesh refined by bisection
+     * (refinement::bisect_to_size()), from the mesh before: a cell that
+     * was not bisected copies its values by local index (as
+     * transfer_dof_values()), a part of a bisected cell takes the old
+     * cell's field at its support points. Exact for every field of the
+     * element on the old mesh (P1 and P2 alike: the parts of a straight
+     * triangle hold its polynomials), so nothing the solution held is lost
+     * and the values written twice (dofs shared by two cells) agree.
+     *
+     * The old mesh may itself be a node split of the one @p old_cell_dofs
+     * were taken on (CrackableMesh::crack() keeps cell indices and local
+     * dof order): a crack and the refinement after it are carried in one
+     * call.
+     *
+     * @param old_cell_dofs Dofs of every old cell, cell after cell.
+     * @param new_cell_dofs The same for the refined mesh.
+     * @param old_vectors, new_vectors Pairs of vectors: old values, and
+     *   vectors of the new number of dofs to fill.
+     */
+    void
+    transfer_refined(
+      const dealii::FiniteElement<2>                     &fe,
+      const std::vector<dealii::types::global_dof_index> &old_cell_dofs,
+      const refinement::RefineResult                     &refined,
+      const std::vector<dealii::types::global_dof_index> &new_cell_dofs,
+      const std::vector<const dealii::Vector<double> *>  &old_vectors,
+      const std::vector<dealii::Vector<double> *>        &new_vectors);
+
+    /**
+     * Per-point cell values (stresses at the cell quadrature's points) on
+     * a mesh refined by bisection, in place: a part of a bisected cell
+     * takes the polynomial of degree @p degree that fits the old cell's
+     * values in least squares (weighted by the quadrature), evaluated at
+     * its own points. Degree 0 gives the old cell's mean; for P2 (degree
+     * 1, three points) the fit passes through the three values, so a
+     * stress linear in the cell (what a P2 step adds) is carried exactly.
+     * Cells not bisected keep their values.
+     */
+    void
+    transfer_refined(
+      const dealii::Quadrature<2>                             &quadrature,
+      const unsigned int                                       degree,
+      const refinement::RefineResult                          &refined,
+      std::vector<std::vector<dealii::SymmetricTensor<2, 2>>> &values);
   } // namespace state_transfer
 } // namespace ndda
 

@@ -166,6 +166,14 @@ namespace ndda
     reinit(const unsigned int n_cells);
 
     /**
+     * After a refinement (CrackableMesh::refine()): every cell takes the
+     * angle of the cell it lies in, @p cell_origin[c] (cells of one block
+     * share their block's angle).
+     */
+    void
+    carry_to_cells(const std::vector<unsigned int> &cell_origin);
+
+    /**
      * Which blocks keep the global frame (those with a roller of
      * @p constraints or an anchor of @p bolts), and the frame of every
      * node of @p dof_map. Call after the dofs, constraints or bolts
