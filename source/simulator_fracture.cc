@@ -4,14 +4,73 @@
 // check the edges, advance crack tips along the stress, crack edges and
 // carry the state to the cracked mesh.
 
+#include <ndda/mesh/refinement.h>
 #include <ndda/mesh/state_transfer.h>
 #include <ndda/scene/scene.h>
 #include <ndda/simulator.h>
 
 #include <algorithm>
+#include <limits>
+#include <optional>
+#include <sstream>
 
 namespace ndda
 {
+  namespace
+  {
+    /**
+     * Fracture/Tip mesh size: bisect the cells near every crack tip of
+     * @p mesh until their longest edge is at most h + (g - 1) d, d the
+     * distance from the cell's centroid to the nearest tip of its block.
+     * Returns what the refinement did, or nothing if no cell was too large.
+     */
+    std::optional<refinement::RefineResult>
+    refine_near_tips(CrackableMesh &mesh, const parameters::Parameters &prm)
+    {
+      const double              h     = prm.fracture.tip_mesh_size;
+      const double              slope = prm.geometry.grading.growth_rate - 1.;
+      const auto               &block_mesh = mesh.get_block_mesh();
+      std::vector<unsigned int> vertex_block(block_mesh.vertices.size());
+      for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
+        for (const unsigned int v : block_mesh.triangles[c])
+          vertex_block[v] = block_mesh.cell_block[c];
+      std::vector<std::vector<Point<2>>> tips(mesh.n_blocks());
+      for (const auto &tip : fracture::find_crack_tips(mesh))
+        tips[vertex_block[tip.vertex]].push_back(
+          block_mesh.vertices[tip.vertex]);
+      const auto bound = [&](const unsigned int block, const Point<2> &x) {
+        double size = std::numeric_limits<double>::infinity();
+        for (const auto &tip : tips[block])
+          size = std::min(size, h + slope * x.distance(tip));
+        return size;
+      };
+      const unsigned int max_cells = prm.geometry.max_cells;
+      const unsigned int n_cells   = block_mesh.triangles.size();
+      try
+        {
+          auto result = mesh.refine(bound, max_cells);
+          if (result.n_bisections == 0)
+            return {};
+          return result;
+        }
+      catch (const ExceptionBase &exc)
+        {
+          std::ostringstream info;
+          exc.print_info(info);
+          AssertThrow(false,
+                      ExcMessage(
+                        "Fracture/Tip mesh size = " + std::to_string(h) +
+                        " m, refining " + std::to_string(n_cells) +
+                        " cells around the crack tips "
+                        "(Geometry/Maximum number of cells = " +
+                        std::to_string(max_cells) + "): " + info.str()));
+        }
+      return {};
+    }
+  } // namespace
+
+
+
   template <int dim>
   std::vector<std::array<unsigned int, 2>>
   Simulator<dim>::check_fracture(const Vector<double> &d, const double dt)
@@ -59,13 +118,49 @@ namespace ndda
     for (const auto &edge : cracked.cracked_edges)
       automatic.mark_cracked({edge.cells[0], edge.cells[1]});
 
+    // Fracture/Tip mesh size: the cells near the tips are bisected; the
+    // per-cell state goes to the parts, the dof vectors below too.
+    std::optional<refinement::RefineResult> refined;
+    if (parameters.fracture.tip_mesh_size > 0.)
+      {
+        SectionTimer::Scope scope(timer, "crack: tip refinement");
+        refined = refine_near_tips(mesh, parameters);
+        if (refined)
+          {
+            const auto &origin = refined->cell_origin;
+            state_transfer::transfer_refined(
+              make_element(parameters.control.finite_element).cell_quadrature,
+              fem.fe->degree - 1,
+              *refined,
+              stresses.cells());
+            fem.frames.carry_to_cells(origin);
+            std::vector<const kinematics::BlockKinematics *> model;
+            std::vector<bool>                                is_auto;
+            for (const unsigned int c : origin)
+              {
+                model.push_back(fem.cell_model[c]);
+                is_auto.push_back(fem.cell_auto[c]);
+              }
+            fem.cell_model.swap(model);
+            fem.cell_auto.swap(is_auto);
+          }
+      }
+
     setup_dofs(false);
     const auto transfer = [&](const Vector<double> &old, Vector<double> &now) {
       now.reinit(fem.dof_handler.n_dofs());
-      state_transfer::transfer_dof_values(old_cell_dofs,
-                                          old,
-                                          fem.dof_map.cell_dofs,
-                                          now);
+      if (refined)
+        state_transfer::transfer_refined(*fem.fe,
+                                         old_cell_dofs,
+                                         *refined,
+                                         fem.dof_map.cell_dofs,
+                                         {&old},
+                                         {&now});
+      else
+        state_transfer::transfer_dof_values(old_cell_dofs,
+                                            old,
+                                            fem.dof_map.cell_dofs,
+                                            now);
     };
     transfer(old_displacement, displacement);
     transfer(old_velocity, kinematics.velocity);

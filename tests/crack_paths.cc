@@ -37,7 +37,17 @@
 // (prm/brazilian_disc_crack.prm, thesis 7.5.3): the crack is pressed shut
 // and sheared; asserted: kinks within 5 degrees of 70.53, each wing ends
 // within 0.2 R of its loaded point.
-// NDDA_DEBUG_ADVANCES=1 in the environment prints every advance.
+// And refinement ahead of the running crack (Fracture/Tip mesh size,
+// issue 18): the tension scene with the nonlocal edge stress on the 5 mm
+// mesh graded to 1.25 mm at the crack's tips and refined to 1.25 mm ahead
+// of the running wings, against the uniform 2.5 mm mesh with the same
+// edge stress: kinks within 5 degrees, area kept, every advance's segment
+// covered by crack faces, two pieces; the paths' distance, the times and
+// the cells at the end printed ('refined TIP START REFERENCE' on the
+// command line runs only this, with those sizes in m; TIP 0: no
+// refinement).
+// NDDA_DEBUG_ADVANCES=1 in the environment prints every advance,
+// NDDA_DEBUG_TIPS=1 the crack tips after every step.
 //
 // Asserted:
 //  - a wing starts at each tip, at the tip vertex;
@@ -45,7 +55,8 @@
 //  - the mesh stays valid (CrackableMesh::check() in the present and the
 //    initial geometry) and its area in the initial geometry is the same to
 //    1e-12 (relative) at the end: moves of vertices and cracks keep it;
-//  - every advance's edge is a crack face at the end;
+//  - every advance's edge is a crack face at the end (or a chain of them,
+//    where refinement bisected it);
 //  - the specimen separates into two large pieces.
 // The paths' distance is printed against one mean edge of the 5 mm mesh
 // (the target) and recorded as met or not.
@@ -125,6 +136,21 @@ namespace
     return s;
   }
 
+  /// The largest distance between two paths over the length both have,
+  /// and that length.
+  std::pair<double, double>
+  paths_apart(const std::vector<Point<2>> &a, const std::vector<Point<2>> &b)
+  {
+    const double length   = std::min(arc_length(a), arc_length(b));
+    const auto   a_common = cut(a, length), b_common = cut(b, length);
+    double       apart = 0;
+    for (const auto &p : a_common)
+      apart = std::max(apart, distance_to(b_common, p));
+    for (const auto &p : b_common)
+      apart = std::max(apart, distance_to(a_common, p));
+    return {apart, length};
+  }
+
   struct TipResult
   {
     bool   found = false;
@@ -182,7 +208,9 @@ namespace
 
   struct RunResult
   {
-    unsigned int             n_cells = 0, n_steps = 0, n_advances = 0;
+    unsigned int n_cells = 0, n_steps = 0, n_advances = 0;
+    /// Cells at the end (more than at the start with Tip mesh size).
+    unsigned int             n_cells_end = 0;
     unsigned int             n_moved = 0, n_cracked = 0, n_events = 0;
     double                   mean_edge = 0, run_time = 0;
     double                   area_change = 0, first_failure = 0;
@@ -259,6 +287,15 @@ namespace
     while (simulator.get_time() < end_time - 1e-12)
       {
         simulator.do_time_step();
+        if (std::getenv("NDDA_DEBUG_TIPS"))
+          {
+            std::cout << "t=" << simulator.get_time() * 1e6 << " cells "
+                      << mesh.get_block_mesh().triangles.size() << " tips:";
+            for (const auto &tip : ndda::fracture::find_crack_tips(mesh))
+              std::cout << " " << tip.vertex << "@"
+                        << mesh.get_initial_vertices()[tip.vertex] * 1e3;
+            std::cout << std::endl;
+          }
         std::map<unsigned int, unsigned int> cells_of_block;
         for (const unsigned int c : specimen)
           ++cells_of_block[mesh.block_of_cell(c)];
@@ -279,8 +316,9 @@ namespace
               stop_length)
           break;
       }
-    result.end_time = simulator.get_time();
-    result.run_time = std::chrono::duration<double>(
+    result.end_time    = simulator.get_time();
+    result.n_cells_end = mesh.get_block_mesh().triangles.size();
+    result.run_time    = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start_time)
                         .count();
     result.n_events      = simulator.get_step_report().crack_events;
@@ -295,26 +333,30 @@ namespace
     initial.vertices = mesh.get_initial_vertices();
     ndda::CrackableMesh::check(initial);
 
-    // Every advance's edge is a crack face now: some pair of vertices at
-    // its two initial positions is cracked.
+    // Every advance's edge is a crack face now (or, refined, a chain of
+    // them): the crack faces on its segment (initial geometry) cover it.
     const auto &advances = simulator.get_tip_advances();
     const auto &x0       = mesh.get_initial_vertices();
     const auto &tris     = mesh.get_block_mesh().triangles;
     for (const auto &a : advances)
       {
-        bool found = false;
+        const std::vector<Point<2>> segment = {a.initial_tip,
+                                               a.initial_target_to};
+        double                      covered = 0;
         for (const auto &t : tris)
-          for (unsigned int j = 0; j < 3 && !found; ++j)
+          for (unsigned int j = 0; j < 3; ++j)
             {
               const unsigned int u = t[j], v = t[(j + 1) % 3];
-              const bool         ends =
-                (x0[u].distance(a.initial_tip) < tolerance &&
-                 x0[v].distance(a.initial_target_to) < tolerance) ||
-                (x0[v].distance(a.initial_tip) < tolerance &&
-                 x0[u].distance(a.initial_target_to) < tolerance);
-              found = ends && mesh.is_cracked(u, v);
+              if (distance_to(segment, x0[u]) < tolerance &&
+                  distance_to(segment, x0[v]) < tolerance &&
+                  mesh.is_cracked(u, v))
+                covered += x0[u].distance(x0[v]);
             }
-        result.faces_cracked = result.faces_cracked && found;
+        // Each face is a side of one triangle: both faces count.
+        result.faces_cracked =
+          result.faces_cracked &&
+          covered >=
+            2 * a.initial_tip.distance(a.initial_target_to) * (1 - 1e-9);
         result.n_moved += a.moved ? 1 : 0;
       }
     result.n_advances = advances.size();
@@ -341,16 +383,18 @@ namespace
          const RunResult   &r,
          const double       mts)
   {
-    std::cout << "Mesh size " << h * 1e3 << " mm: " << r.n_cells
-              << " cells, mean edge " << r.mean_edge * 1e3 << " mm; "
-              << r.n_steps << " steps, " << r.n_cracked << " edges cracked, "
-              << r.n_advances << " tip advances (" << r.n_moved
-              << " with a vertex moved), " << r.run_time << " s; first failure "
-              << r.first_failure * 1e6 << " us; area change " << r.area_change
-              << "; " << (r.separated ? "separated at " : "NOT separated, end ")
+    std::cout << "Mesh size " << h * 1e3 << " mm: " << r.n_cells << " cells ("
+              << r.n_cells_end << " at the end), mean edge "
+              << r.mean_edge * 1e3 << " mm; " << r.n_steps << " steps, "
+              << r.n_cracked << " edges cracked, " << r.n_advances
+              << " tip advances (" << r.n_moved << " with a vertex moved), "
+              << r.run_time << " s; first failure " << r.first_failure * 1e6
+              << " us; area change " << r.area_change << "; "
+              << (r.separated ? "separated at " : "NOT separated, end ")
               << (r.separated ? r.separation_time : r.end_time) * 1e6 << " us"
               << std::endl;
     record(key + "cells", r.n_cells);
+    record(key + "cells_end", r.n_cells_end);
     record(key + "mean_edge", r.mean_edge * 1e3, 3);
     record(key + "advances", r.n_advances);
     record(key + "moved", r.n_moved);
@@ -402,12 +446,20 @@ main(int argc, char **argv)
   const double        mts              = -53.13;
   std::vector<double> mesh_sizes       = {0.005, 0.0025};
   double              compression_mesh = 0.006;
-  if (argc > 1 && std::string(argv[1]) == "compression")
+  // 'refined tip': the 2.5 mm mesh and the 5 mm mesh refined to tip (m)
+  // ahead of the running crack only.
+  const bool refined_only = argc > 1 && std::string(argv[1]) == "refined";
+  if (refined_only)
+    {
+      mesh_sizes       = {0.0025};
+      compression_mesh = 0;
+    }
+  else if (argc > 1 && std::string(argv[1]) == "compression")
     {
       mesh_sizes.clear();
       compression_mesh = argc > 2 ? std::atof(argv[2]) : compression_mesh;
     }
-  else if (argc > 1)
+  else if (argc > 1 && std::string(argv[1]) != "nonlocal")
     {
       mesh_sizes       = {std::atof(argv[1])};
       compression_mesh = 0;
@@ -444,14 +496,8 @@ main(int argc, char **argv)
           const auto &b = results[1].tips[k].path;
           if (a.size() < 2 || b.size() < 2)
             continue;
-          const double length   = std::min(arc_length(a), arc_length(b));
-          const auto   a_common = cut(a, length), b_common = cut(b, length);
-          double       apart = 0;
-          for (const auto &p : a_common)
-            apart = std::max(apart, distance_to(b_common, p));
-          for (const auto &p : b_common)
-            apart = std::max(apart, distance_to(a_common, p));
-          const std::string w = prefix + (k == 0 ? "upper." : "lower.");
+          const auto [apart, length] = paths_apart(a, b);
+          const std::string w        = prefix + (k == 0 ? "upper." : "lower.");
           std::cout << (k == 0 ? "upper" : "lower")
                     << " wing: the paths of the two meshes are at most "
                     << apart * 1e3 << " mm apart over " << length * 1e3
@@ -486,18 +532,78 @@ main(int argc, char **argv)
                   "the kink is within 5 degrees of the MTS angle");
           }
       }
+    return results;
   };
   tension(mesh_sizes, "crack_paths.", "");
+
   // With a material length for initiation (nonlocal_length_scale): does
   // the whole growth, not only its start, come at the same time on both
   // meshes?
+  const std::string nonlocal_entries = "  set Edge stress = nonlocal average\n"
+                                       "  set Nonlocal radius = " +
+                                       nonlocal_radius + "\n";
+  std::vector<RunResult> nonlocal;
   if (argc == 1 || std::string(argv[1]) == "nonlocal")
-    tension({0.005, 0.0025},
-            "crack_paths.nonlocal.",
-            "  set Edge stress = nonlocal average\n"
-            "  set Nonlocal radius = " +
-              nonlocal_radius + "\n");
+    nonlocal =
+      tension({0.005, 0.0025}, "crack_paths.nonlocal.", nonlocal_entries);
+  else if (refined_only)
+    // 'refined TIP START REFERENCE': the uniform reference mesh (m).
+    nonlocal = tension({argc > 4 ? std::atof(argv[4]) : 0.0025},
+                       "crack_paths.nonlocal.",
+                       nonlocal_entries);
 
+
+  // Refinement ahead of the running crack (Fracture/Tip mesh size) with
+  // the nonlocal edge stress: the 5 mm mesh graded to 1.25 mm at the
+  // crack's tips and refined to 1.25 mm around the tips after every crack
+  // event, against the uniform 2.5 mm mesh with the same edge stress: the
+  // kink, the wing paths, the times and the cells it takes. (With the cell
+  // average, the fine cells at a tip fail earlier and around it: cracks branch,
+  // as on a uniformly fine mesh.)
+  if (argc == 1 || refined_only)
+    {
+      // 'refined TIP [START]': Tip mesh size TIP (0: none) and the start
+      // graded to START at the crack's tips (default TIP; 0: uniform).
+      const double tip =
+        argc > 2 && refined_only ? std::atof(argv[2]) : 0.00125;
+      const double start_size =
+        argc > 3 && refined_only ? std::atof(argv[3]) : tip;
+      std::ostringstream entry;
+      // The entry closes Fracture and opens Geometry, which run() closes.
+      entry << nonlocal_entries << "  set Tip mesh size = " << tip << "\n"
+            << "end\nsubsection Geometry\n  subsection Mesh grading\n"
+            << "    set Crack tip mesh size = " << start_size << "\n  end\n";
+      const RunResult r =
+        run("inclined_crack_tension", 0.005, 0, "", entry.str());
+      const std::string key  = "crack_paths.refined.";
+      const RunResult  &fine = nonlocal.back();
+      report(key, 0.005, r, mts);
+      std::cout << "  tip mesh size " << tip * 1e3 << " mm: " << r.n_cells_end
+                << " cells at the end against " << fine.n_cells
+                << " of the uniform " << fine.mean_edge * 1e3
+                << " mm mean edge mesh" << std::endl;
+      std::cout << "  first failure " << r.first_failure * 1e6
+                << " us, separation " << r.separation_time * 1e6
+                << " us; uniform: " << fine.first_failure * 1e6 << " us, "
+                << fine.separation_time * 1e6 << " us" << std::endl;
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          const auto [apart, length] =
+            paths_apart(r.tips[k].path, fine.tips[k].path);
+          const std::string w = key + (k == 0 ? "upper." : "lower.");
+          std::cout << "  " << (k == 0 ? "upper" : "lower") << " wing: at most "
+                    << apart * 1e3 << " mm from the uniform mesh's path over "
+                    << length * 1e3 << " mm" << std::endl;
+          record(w + "apart", apart * 1e3, 3);
+          record(w + "common", length * 1e3, 3);
+          check(r.tips[k].found && std::abs(r.tips[k].kink - mts) < 5,
+                "refined: the kink is within 5 degrees of the MTS angle");
+        }
+      check(r.area_change < 1e-12,
+            "refined: the area in the initial geometry is kept to 1e-12");
+      check(r.faces_cracked, "refined: every advance's edge is a crack face");
+      check(r.separated, "refined: the specimen separates");
+    }
   // A hole in the upper wing's way (radius 6 mm, centre at y = 64 mm, where
   // the wing runs on the 5 mm mesh) and one beside it (y = 78 mm): the
   // wing runs into the first; the mesh stays valid and the area kept

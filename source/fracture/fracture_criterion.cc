@@ -193,6 +193,20 @@ namespace ndda
           "cracks, so the path does not follow the mesh "
           "(doc/fracture.md, 'Crack paths free of the mesh'). Edges that "
           "fail away from tips crack as with mesh edges.");
+        prm.declare_entry(
+          "Tip mesh size",
+          "0",
+          Patterns::Double(0.),
+          "Longest triangle edge (m) around every crack tip while cracks "
+          "grow: after every crack event the cells near each tip are split "
+          "by longest-edge bisection until their longest edge is at most "
+          "h + (g - 1) d at distance d from the tip, g being Geometry/Mesh "
+          "grading/Growth rate. The two faces of a crack are split "
+          "together; the state goes to the new cells (exactly for P1 and "
+          "P2: doc/fracture.md, 'Refinement ahead of a running crack'). "
+          "The mesh at the start is graded by Geometry/Mesh grading "
+          "instead (Crack tip mesh size for pre-existing cracks). 0: the "
+          "mesh is not refined.");
         fracture::FractureCriterionRegistry::declare_parameters(prm);
       }
       prm.leave_subsection();
@@ -228,6 +242,7 @@ namespace ndda
         max_crack_events = prm.get_integer("Maximum crack events per step");
         align_crack_paths =
           prm.get("Crack path") == "maximum tangential stress";
+        tip_mesh_size = prm.get_double("Tip mesh size");
         criterion =
           fracture::FractureCriterionRegistry::create_and_parse(criterion_name,
                                                                 prm);

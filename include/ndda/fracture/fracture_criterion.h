@@ -237,6 +237,10 @@ namespace ndda
       /// tangential stress, the mesh aligned to it: fracture/crack_tips.h),
       /// false for `mesh edges` (the failing edge cracks, thesis 5.3).
       bool align_crack_paths = false;
+      /// `set Tip mesh size`: the longest edge (m) the mesh is refined to
+      /// around every crack tip after each crack event (longest-edge
+      /// bisection, CrackableMesh::refine()); 0: no refinement.
+      double tip_mesh_size = 0;
       /// The selected criterion with its parameters read; stateless, so it
       /// may be shared.
       std::shared_ptr<const fracture::FractureCriterion> criterion;
