@@ -134,6 +134,7 @@ namespace ndda
               *refined,
               stresses.cells());
             fem.frames.carry_to_cells(origin);
+            fem.element_cache.carry_to_cells(*refined);
             std::vector<const kinematics::BlockKinematics *> model;
             std::vector<bool>                                is_auto;
             for (const unsigned int c : origin)

@@ -233,6 +233,35 @@ namespace ndda
 
 
   template <int dim>
+  void
+  ElementCache<dim>::carry_to_cells(const refinement::RefineResult &refined)
+  {
+    if (data.size() != refined.n_old_cells)
+      return; // nothing computed yet: update() computes every cell
+    std::vector<CellData> carried(refined.cell_origin.size());
+    for (unsigned int c = 0; c < carried.size(); ++c)
+      {
+        // A cell not bisected is its own origin, which has no parts.
+        if (!refined.is_part[c])
+          {
+            carried[c] = std::move(data[c]);
+            continue;
+          }
+        const auto &old = data[refined.cell_origin[c]];
+        const auto &r   = refined.reference_vertices[c];
+        // The part's share of the old cell: its area on the reference
+        // triangle, whose area is 1/2.
+        const double share =
+          std::abs((r[1][0] - r[0][0]) * (r[2][1] - r[0][1]) -
+                   (r[1][1] - r[0][1]) * (r[2][0] - r[0][0]));
+        carried[c].initial_area = old.initial_area * share;
+      }
+    data.swap(carried);
+  }
+
+
+
+  template <int dim>
   std::vector<typename DoFHandler<dim>::active_cell_iterator>
   ElementCache<dim>::select_cells(const DoFHandler<dim>     &dof_handler,
                                   const bool                 only_moved_cells,

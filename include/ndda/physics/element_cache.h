@@ -13,6 +13,7 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <ndda/mesh/refinement.h>
 #include <ndda/physics/constitutive_law.h>
 #include <ndda/physics/physics_parameters.h>
 
@@ -98,6 +99,17 @@ namespace ndda
     {
       ar &data &tangents &computed_cells;
     }
+
+    /**
+     * After a refinement (CrackableMesh::refine()): cells not bisected keep
+     * their data (their index too); the parts of a bisected cell start
+     * empty, so the next update() computes them, with the mass of their
+     * share of the old cell (initial_area scaled by the part's share of
+     * the old cell's reference triangle), so that no mass is gained or
+     * lost.
+     */
+    void
+    carry_to_cells(const refinement::RefineResult &refined);
 
     /**
      * The quadratures of the element (Element::cell_quadrature and
