@@ -108,7 +108,8 @@ main(int argc, char **argv)
     targets = {1e4, 1e5};
 
   std::cout << "cells, first step (s), steady step (s), crack (s), "
-               "step after crack (s), (crack + step after) / first step"
+               "step after crack (s) (its factorizations), (crack + step "
+               "after) / first step"
             << std::endl;
   // The first solve of a process pays for touching fresh memory (page
   // faults, UMFPACK's workspace): a throwaway scene of the largest size
@@ -187,16 +188,20 @@ main(int argc, char **argv)
         const unsigned int n_cells = mesh.triangles.size();
         timer.restart();
         simulator.crack_edges(crack);
-        const double       crack_time = timer.wall_time();
-        const unsigned int n_after    = mesh.triangles.size();
+        const double       crack_time     = timer.wall_time();
+        const unsigned int n_after        = mesh.triangles.size();
+        const unsigned int factorizations = simulator.n_factorizations();
         timer.restart();
         simulator.do_time_step();
-        const double after = timer.wall_time();
+        const double       after = timer.wall_time();
+        const unsigned int after_factorizations =
+          simulator.n_factorizations() - factorizations;
         const double ratio = (crack_time + after) / first;
         std::cout << n_cells
                   << (refined ? " refined to " + std::to_string(n_after) : "")
                   << ", " << first << ", " << steady << ", " << crack_time
-                  << ", " << after << ", " << ratio << std::endl;
+                  << ", " << after << " (" << after_factorizations
+                  << " factorizations), " << ratio << std::endl;
         // For doc/validation.md (scripts/validation_page.py).
         const std::string key =
           std::string("crack_event.") + (refined ? "refined." : "") +
