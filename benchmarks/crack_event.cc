@@ -23,11 +23,19 @@
  * Every first step is measured warm: a throwaway scene of the largest
  * size is solved first.
  *
- * Then the same with `Fracture/Tip mesh size` = h / 4 (issue 18): a crack
- * of two edges through the centre, whose two tips lie inside the block, so
- * that crack_edges() also refines the cells around both tips to a quarter
- * of the mesh size (growth rate 1.3) and carries the state to them; the
- * step after runs on the refined mesh.
+ * Three cracks per size:
+ * - one edge: both its ends stay single, so the crack is only marked
+ *   (closed, thesis figure 5.4) and the step after has no crack faces in
+ *   contact;
+ * - two edges through the centre: their middle vertex splits, the crack is
+ *   open between two tips inside the block, and the step after iterates
+ *   the crack faces' contacts (open-close iteration);
+ * - the same two edges with `Fracture/Tip mesh size` = h / 4 (issue 18):
+ *   crack_edges() also refines the cells around both tips to a quarter of
+ *   the mesh size (growth rate 1.3), in the same rebuild, and carries the
+ *   state to them; the step after runs on the refined mesh.
+ * After each step after the crack, the deal.II-style timer table of the
+ * run goes to stderr with NDDA_TIMER_TABLE=1.
  *
  * Usage: crack_event [target n_cells ...]   (default: 1e4 1e5)
  */
@@ -40,6 +48,7 @@
 #include <ndda/simulator.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -123,9 +132,16 @@ main(int argc, char **argv)
     simulator.setup();
     simulator.do_time_step();
   }
-  for (const bool refined : {false, true})
+  enum class Crack
+  {
+    one_edge,
+    two_edges,
+    refined
+  };
+  for (const Crack kind : {Crack::one_edge, Crack::two_edges, Crack::refined})
     for (const double target : targets)
       {
+        const bool refined = kind == Crack::refined;
         // The mesher gives about 5 / h^2 triangles on the unit square.
         const double                 h = std::sqrt(5. / target);
         ParameterHandler             prm;
@@ -143,8 +159,9 @@ main(int argc, char **argv)
         simulator.do_time_step();
         const double steady = timer.wall_time();
 
-        // The interior edge nearest the centre; refined, also the interior
-        // edge from its second end that continues it most straight.
+        // The interior edge nearest the centre; for two edges, also the
+        // interior edge from its second end that continues it most
+        // straight.
         const auto edges =
           ndda::fracture::find_interior_edges(mesh.triangles,
                                               mesh.vertices.size());
@@ -165,7 +182,7 @@ main(int argc, char **argv)
               }
           }
         std::vector<std::array<unsigned int, 2>> crack = {chosen};
-        if (refined)
+        if (kind != Crack::one_edge)
           {
             std::array<unsigned int, 2> next{};
             double                      straightest = -2;
@@ -197,14 +214,19 @@ main(int argc, char **argv)
         const unsigned int after_factorizations =
           simulator.n_factorizations() - factorizations;
         const double ratio = (crack_time + after) / first;
-        std::cout << n_cells
-                  << (refined ? " refined to " + std::to_string(n_after) : "")
+        if (std::getenv("NDDA_TIMER_TABLE") != nullptr)
+          simulator.get_timer().print_summary(std::cerr);
+        std::cout << n_cells << (kind == Crack::one_edge ? "" : ", two edges")
+                  << (refined ? ", refined to " + std::to_string(n_after) : "")
                   << ", " << first << ", " << steady << ", " << crack_time
                   << ", " << after << " (" << after_factorizations
                   << " factorizations), " << ratio << std::endl;
         // For doc/validation.md (scripts/validation_page.py).
         const std::string key =
-          std::string("crack_event.") + (refined ? "refined." : "") +
+          std::string("crack_event.") +
+          (kind == Crack::two_edges ? "open." :
+           refined                  ? "refined." :
+                                      "") +
           std::to_string(int(std::round(std::log10(target)))) + ".";
         std::cout << std::setprecision(3) << "@value " << key << "cells "
                   << n_cells << "\n@value " << key << "crack_ms "

@@ -12,60 +12,50 @@
 #include <algorithm>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 namespace ndda
 {
   namespace
   {
     /**
-     * Fracture/Tip mesh size: bisect the cells near every crack tip of
-     * @p mesh until their longest edge is at most h + (g - 1) d, d the
-     * distance from the cell's centroid to the nearest tip of its block.
-     * Returns what the refinement did, or nothing if no cell was too large.
+     * Fracture/Tip mesh size: after a crack, bisect the cells near every
+     * crack tip until their longest edge is at most h + (g - 1) d, d the
+     * distance from the cell's centroid to the nearest tip of its block
+     * (tips of the cracked mesh). No refinement if the entry is 0.
      */
-    std::optional<refinement::RefineResult>
-    refine_near_tips(CrackableMesh &mesh, const parameters::Parameters &prm)
+    RefineAfterCrack
+    refinement_near_tips(const parameters::Parameters &prm,
+                         const unsigned int            n_cells)
     {
-      const double              h     = prm.fracture.tip_mesh_size;
-      const double              slope = prm.geometry.grading.growth_rate - 1.;
-      const auto               &block_mesh = mesh.get_block_mesh();
-      std::vector<unsigned int> vertex_block(block_mesh.vertices.size());
-      for (unsigned int c = 0; c < block_mesh.triangles.size(); ++c)
-        for (const unsigned int v : block_mesh.triangles[c])
-          vertex_block[v] = block_mesh.cell_block[c];
-      std::vector<std::vector<Point<2>>> tips(mesh.n_blocks());
-      for (const auto &tip : fracture::find_crack_tips(mesh))
-        tips[vertex_block[tip.vertex]].push_back(
-          block_mesh.vertices[tip.vertex]);
-      const auto bound = [&](const unsigned int block, const Point<2> &x) {
-        double size = std::numeric_limits<double>::infinity();
-        for (const auto &tip : tips[block])
-          size = std::min(size, h + slope * x.distance(tip));
-        return size;
+      RefineAfterCrack refine;
+      const double     h = prm.fracture.tip_mesh_size;
+      if (!(h > 0.))
+        return refine;
+      const double slope = prm.geometry.grading.growth_rate - 1.;
+      refine.size_bound  = [h, slope](const geometry::BlockMesh   &mesh,
+                                     const std::vector<Point<2>> &initial) {
+        std::vector<unsigned int> vertex_block(mesh.vertices.size());
+        for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
+          for (const unsigned int v : mesh.triangles[c])
+            vertex_block[v] = mesh.cell_block[c];
+        std::vector<std::vector<Point<2>>> tips(mesh.block_names.size());
+        for (const auto &tip : fracture::find_crack_tips(mesh, initial))
+          tips[vertex_block[tip.vertex]].push_back(mesh.vertices[tip.vertex]);
+        return RefineAfterCrack::SizeBound(
+          [h, slope, tips](const unsigned int block, const Point<2> &x) {
+            double size = std::numeric_limits<double>::infinity();
+            for (const auto &tip : tips[block])
+              size = std::min(size, h + slope * x.distance(tip));
+            return size;
+          });
       };
-      const unsigned int max_cells = prm.geometry.max_cells;
-      const unsigned int n_cells   = block_mesh.triangles.size();
-      try
-        {
-          auto result = mesh.refine(bound, max_cells);
-          if (result.n_bisections == 0)
-            return {};
-          return result;
-        }
-      catch (const ExceptionBase &exc)
-        {
-          std::ostringstream info;
-          exc.print_info(info);
-          AssertThrow(false,
-                      ExcMessage(
-                        "Fracture/Tip mesh size = " + std::to_string(h) +
-                        " m, refining " + std::to_string(n_cells) +
-                        " cells around the crack tips "
-                        "(Geometry/Maximum number of cells = " +
-                        std::to_string(max_cells) + "): " + info.str()));
-        }
-      return {};
+      refine.max_cells = prm.geometry.max_cells;
+      refine.what      = "Fracture/Tip mesh size = " + std::to_string(h) +
+                    " m, refining " + std::to_string(n_cells) +
+                    " cells around the crack tips (Geometry/Maximum number "
+                    "of cells = " +
+                    std::to_string(refine.max_cells) + ")";
+      return refine;
     }
   } // namespace
 
@@ -113,38 +103,36 @@ namespace ndda
     const std::vector<double>     bolt_forces = fem.bolts.axial_forces();
     const contact::ContactHandler old_contacts(contacts);
 
-    const CrackResult cracked = mesh.crack(edges);
+    // Fracture/Tip mesh size: the cells near the tips are bisected in the
+    // same rebuild; the per-cell state goes to the parts, the dof vectors
+    // below too.
+    const CrackResult cracked =
+      mesh.crack(edges,
+                 refinement_near_tips(parameters,
+                                      mesh.get_block_mesh().triangles.size()));
     n_cracked_edges += edges.size();
     for (const auto &edge : cracked.cracked_edges)
       automatic.mark_cracked({edge.cells[0], edge.cells[1]});
-
-    // Fracture/Tip mesh size: the cells near the tips are bisected; the
-    // per-cell state goes to the parts, the dof vectors below too.
-    std::optional<refinement::RefineResult> refined;
-    if (parameters.fracture.tip_mesh_size > 0.)
+    const std::optional<refinement::RefineResult> &refined = cracked.refined;
+    if (refined)
       {
-        SectionTimer::Scope scope(timer, "crack: tip refinement");
-        refined = refine_near_tips(mesh, parameters);
-        if (refined)
+        const auto &origin = refined->cell_origin;
+        state_transfer::transfer_refined(
+          make_element(parameters.control.finite_element).cell_quadrature,
+          fem.fe->degree - 1,
+          *refined,
+          stresses.cells());
+        fem.frames.carry_to_cells(origin);
+        fem.element_cache.carry_to_cells(*refined);
+        std::vector<const kinematics::BlockKinematics *> model;
+        std::vector<bool>                                is_auto;
+        for (const unsigned int c : origin)
           {
-            const auto &origin = refined->cell_origin;
-            state_transfer::transfer_refined(
-              make_element(parameters.control.finite_element).cell_quadrature,
-              fem.fe->degree - 1,
-              *refined,
-              stresses.cells());
-            fem.frames.carry_to_cells(origin);
-            fem.element_cache.carry_to_cells(*refined);
-            std::vector<const kinematics::BlockKinematics *> model;
-            std::vector<bool>                                is_auto;
-            for (const unsigned int c : origin)
-              {
-                model.push_back(fem.cell_model[c]);
-                is_auto.push_back(fem.cell_auto[c]);
-              }
-            fem.cell_model.swap(model);
-            fem.cell_auto.swap(is_auto);
+            model.push_back(fem.cell_model[c]);
+            is_auto.push_back(fem.cell_auto[c]);
           }
+        fem.cell_model.swap(model);
+        fem.cell_auto.swap(is_auto);
       }
 
     setup_dofs(false);

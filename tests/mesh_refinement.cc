@@ -22,7 +22,11 @@
 //  3. every new cell's vertices are its origin cell's at the recorded
 //     reference points, in both geometries (to 1e-12);
 //  4. more cells than the limit: an ExcMessage, the mesh unchanged;
-//  5. transfer_refined() carries the element's own fields exactly (P1
+//  5. crack() with a RefineAfterCrack makes, in one rebuild, the mesh that
+//     crack() and then refine() make (same cells, vertices, crack faces,
+//     origins); beyond the limit the crack is refused too, and the error
+//     names the refinement;
+//  6. transfer_refined() carries the element's own fields exactly (P1
 //     linear, P2 quadratic, two components) and a stress linear in space
 //     through the degree 1 fit (three Gauss points); degree 0 gives the
 //     old cell's mean.
@@ -46,6 +50,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <string>
 
 #include "grids.h"
 #include "tests.h"
@@ -84,9 +89,10 @@ namespace
     return mesh;
   }
 
-  /** The cracked and marked mesh, ready to refine. */
-  void
-  make_mesh(CrackableMesh &mesh)
+  /** The cracked and marked mesh, ready to refine (or refined in the same
+   * rebuild, with @p refine). */
+  CrackResult
+  make_mesh(CrackableMesh &mesh, const RefineAfterCrack &refine = {})
   {
     mesh.build(two_blocks());
     std::vector<std::array<unsigned int, 2>> edges;
@@ -96,7 +102,7 @@ namespace
     // A diagonal with both ends inside the block: a closed crack.
     edges.push_back(
       {{vertex_at(mesh, Point<2>(5, 1)), vertex_at(mesh, Point<2>(6, 2))}});
-    mesh.crack(edges);
+    return mesh.crack(edges, refine);
   }
 
   double
@@ -390,7 +396,59 @@ main(int argc, char **argv)
   check(thrown && mesh.get_block_mesh().triangles.size() == n_cells,
         "a refinement beyond the limit is refused, the mesh unchanged");
 
-  // 5. State.
+  // 5. Crack and refine in one rebuild (RefineAfterCrack): the same mesh
+  // as crack() and then refine(); beyond the limit, neither happens.
+  {
+    RefineAfterCrack refine;
+    unsigned int     n_bound_calls = 0;
+    refine.size_bound              = [&](const geometry::BlockMesh   &cracked,
+                            const std::vector<Point<2>> &initial) {
+      ++n_bound_calls;
+      check(cracked.crack_edges.size() == before.crack_edges.size() &&
+              initial.size() == cracked.vertices.size(),
+            "the size bound is made from the cracked mesh");
+      return RefineAfterCrack::SizeBound(size_bound);
+    };
+    refine.max_cells = 100000;
+    CrackableMesh     at_once;
+    const CrackResult result = make_mesh(at_once, refine);
+    const auto       &once   = at_once.get_block_mesh();
+    check(n_bound_calls == 1 && result.refined &&
+            result.refined->n_bisections == refined.n_bisections &&
+            result.refined->cell_origin == refined.cell_origin &&
+            once.triangles == after.triangles &&
+            once.vertices == after.vertices &&
+            once.crack_edges == after.crack_edges &&
+            at_once.get_initial_vertices() == mesh.get_initial_vertices() &&
+            at_once.get_triangulation().n_active_cells() ==
+              after.triangles.size(),
+          "crack with refinement makes the mesh of crack, then refine");
+
+    refine.max_cells = before.triangles.size() + 10;
+    refine.what      = "the test's refinement";
+    CrackableMesh refused;
+    refused.build(two_blocks());
+    const auto uncracked = refused.get_block_mesh();
+    bool       named     = false;
+    try
+      {
+        make_mesh(refused, refine);
+      }
+    catch (const dealii::ExceptionBase &exc)
+      {
+        named = std::string(exc.what()).find("the test's refinement") !=
+                std::string::npos;
+      }
+    check(named && refused.get_block_mesh().triangles == uncracked.triangles &&
+            refused.get_block_mesh().crack_edges.empty(),
+          "a crack whose refinement goes beyond the limit is refused whole, "
+          "the error naming the refinement");
+    std::cout << "crack and refine in one rebuild: "
+              << result.refined->n_bisections << " bisections, same mesh"
+              << std::endl;
+  }
+
+  // 6. State.
   check_transfer(1);
   check_transfer(2);
   std::cout << "OK" << std::endl;

@@ -180,7 +180,7 @@ namespace
       stresses.initialize(
         cache, dof_map, materials, cell_material, mesh.get_triangulation());
       stresses.reinit(cell_material.size(), cache.n_quadrature_points());
-      const NodeLocator nodes(mesh, dof_handler, mapping);
+      const NodeLocator nodes(mesh, dof_handler, dof_map);
       support_points = nodes.support_points;
       component      = nodes.component;
       constraints.setup(parameters::BoundaryConditions(),

@@ -266,6 +266,13 @@ namespace ndda
       return stored_strain_energy;
     }
 
+    /** Wall time per section of the run so far (the table of the log). */
+    const SectionTimer &
+    get_timer() const
+    {
+      return timer;
+    }
+
     /** Number of factorizations of the system matrix so far. */
     unsigned int
     n_factorizations() const

@@ -125,9 +125,29 @@ namespace ndda
     std::vector<CrackTip>
     find_crack_tips(const CrackableMesh &mesh)
     {
-      const auto        &block_mesh = mesh.get_block_mesh();
+      return find_crack_tips(mesh.get_block_mesh(),
+                             mesh.get_initial_vertices());
+    }
+
+
+
+    std::vector<CrackTip>
+    find_crack_tips(const geometry::BlockMesh   &block_mesh,
+                    const std::vector<Point<2>> &initial_vertices)
+    {
       const unsigned int n_vertices = block_mesh.vertices.size();
-      const Adjacency    adjacency(block_mesh);
+      // The crack faces, as undirected sorted keys.
+      std::vector<std::uint64_t> crack_keys;
+      crack_keys.reserve(block_mesh.crack_edges.size());
+      for (const auto &e : block_mesh.crack_edges)
+        crack_keys.push_back(key(std::min(e[0], e[1]), std::max(e[0], e[1])));
+      std::sort(crack_keys.begin(), crack_keys.end());
+      const auto is_cracked = [&](const unsigned int a, const unsigned int b) {
+        return std::binary_search(crack_keys.begin(),
+                                  crack_keys.end(),
+                                  key(std::min(a, b), std::max(a, b)));
+      };
+      const Adjacency adjacency(block_mesh);
       // Per vertex: boundary sides at it, and the crack face running into
       // it and out of it.
       constexpr unsigned int    none = dealii::numbers::invalid_unsigned_int;
@@ -141,7 +161,7 @@ namespace ndda
               continue;
             ++n_boundary[a];
             ++n_boundary[b];
-            if (mesh.is_cracked(a, b))
+            if (is_cracked(a, b))
               {
                 into[b] = a;
                 out[a]  = b;
@@ -154,8 +174,7 @@ namespace ndda
         // nodes on its side instead.
         if (n_boundary[v] == 2 && into[v] != none && out[v] != none &&
             into[v] != out[v] &&
-            mesh.get_initial_vertices()[into[v]] ==
-              mesh.get_initial_vertices()[out[v]])
+            initial_vertices[into[v]] == initial_vertices[out[v]])
           {
             // A cell lies on the left of each side: the face running into
             // the tip has its cell on +y', the one running out on -y'.
@@ -171,8 +190,7 @@ namespace ndda
                 const unsigned int u = tip.behind[0], l = tip.behind[1];
                 if (n_boundary[u] != 2 || n_boundary[l] != 2 ||
                     into[u] == none || out[l] == none || into[u] == out[l] ||
-                    !(mesh.get_initial_vertices()[into[u]] ==
-                      mesh.get_initial_vertices()[out[l]]))
+                    !(initial_vertices[into[u]] == initial_vertices[out[l]]))
                   break;
                 const auto        &y = block_mesh.vertices;
                 const Tensor<1, 2> last =

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <map>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <unordered_set>
 
@@ -165,6 +166,59 @@ namespace ndda
           mesh.cell_block[c] = block;
         }
     }
+
+
+
+    /**
+     * Check that every triangle of @p mesh is counter-clockwise with
+     * positive area on the positions @p initial (check() has looked at
+     * the topology): refinement bisects in both geometries.
+     */
+    void
+    check_initial_geometry(const geometry::BlockMesh   &mesh,
+                           const std::vector<Point<2>> &initial)
+    {
+      double max_extent = 0;
+      for (const auto &v : initial)
+        max_extent = std::max({max_extent, std::abs(v[0]), std::abs(v[1])});
+      for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
+        AssertThrow(signed_area(initial, mesh.triangles[c]) >
+                      1e-14 * max_extent * max_extent,
+                    ExcMessage("Mesh: " + describe(mesh, c) +
+                               " is not counter-clockwise with positive "
+                               "area in the initial geometry."));
+    }
+
+
+
+    /**
+     * refinement::bisect_to_size() with its error message started by
+     * @p what.
+     */
+    refinement::RefineResult
+    bisect(geometry::BlockMesh               &mesh,
+           std::vector<Point<2>>             &initial,
+           const RefineAfterCrack::SizeBound &size_bound,
+           const unsigned int                 max_cells,
+           const std::string                 &what)
+    {
+      try
+        {
+          return refinement::bisect_to_size(mesh,
+                                            initial,
+                                            size_bound,
+                                            max_cells);
+        }
+      catch (const ExceptionBase &exc)
+        {
+          if (what.empty())
+            throw;
+          std::ostringstream info;
+          exc.print_info(info);
+          AssertThrow(false, ExcMessage(what + ": " + info.str()));
+        }
+      return {};
+    }
   } // namespace
 
 
@@ -298,7 +352,8 @@ namespace ndda
 
 
   CrackResult
-  CrackableMesh::crack(const std::vector<std::array<unsigned int, 2>> &edges)
+  CrackableMesh::crack(const std::vector<std::array<unsigned int, 2>> &edges,
+                       const RefineAfterCrack                         &refine)
   {
     const unsigned int n_vertices = block_mesh.vertices.size();
 
@@ -349,13 +404,26 @@ namespace ndda
         result.cracked_edges.push_back(cracked);
       }
 
-    // 4. Check and rebuild.
-    check(mesh);
     result.cell_block = mesh.cell_block;
     // A copied vertex started where its origin did.
     std::vector<Point<2>> initial(mesh.vertices.size());
     for (unsigned int v = 0; v < initial.size(); ++v)
       initial[v] = initial_vertices[result.vertex_origin[v]];
+
+    // 4. Refine (RefineAfterCrack), check and rebuild.
+    if (refine.size_bound)
+      {
+        auto refined = bisect(mesh,
+                              initial,
+                              refine.size_bound(mesh, initial),
+                              refine.max_cells,
+                              refine.what);
+        if (refined.n_bisections > 0)
+          result.refined = std::move(refined);
+      }
+    check(mesh);
+    if (result.refined)
+      check_initial_geometry(mesh, initial);
     initial_vertices.swap(initial);
     install(std::move(mesh));
     return result;
@@ -515,22 +583,16 @@ namespace ndda
 
 
   refinement::RefineResult
-  CrackableMesh::refine(
-    const std::function<double(unsigned int, const Point<2> &)> &size_bound,
-    const unsigned int                                           max_cells)
+  CrackableMesh::refine(const RefineAfterCrack::SizeBound &size_bound,
+                        const unsigned int                 max_cells)
   {
     geometry::BlockMesh   mesh    = block_mesh;
     std::vector<Point<2>> initial = initial_vertices;
-    auto                  result =
-      refinement::bisect_to_size(mesh, initial, size_bound, max_cells);
+    auto result = bisect(mesh, initial, size_bound, max_cells, "");
     if (result.n_bisections == 0)
       return result;
     check(mesh);
-    {
-      geometry::BlockMesh at_start = mesh;
-      at_start.vertices            = initial;
-      check(at_start);
-    }
+    check_initial_geometry(mesh, initial);
     initial_vertices.swap(initial);
     install(std::move(mesh));
     return result;

@@ -279,6 +279,8 @@ namespace ndda
           result.reference_vertices.push_back({{rm, rb, ro}});
           result.is_part[c] = true;
           result.is_part.push_back(true);
+          changed.push_back(c);
+          changed.push_back(n);
           ++result.n_bisections;
 
           // A crack face (open or closed) becomes two.
@@ -309,6 +311,8 @@ namespace ndda
       public:
         unsigned int max_cells = none;
         std::string  too_many_cells_message;
+        /// The cells bisect() has made or changed (with repeats).
+        std::vector<unsigned int> changed;
 
       private:
         geometry::BlockMesh   &mesh;
@@ -353,14 +357,19 @@ namespace ndda
         "the refined mesh would have more than " + std::to_string(max_cells) +
         " cells: raise the size (or the growth rate), or the limit.";
 
-      // Passes over all cells: each cell too large is bisected once (with
-      // the cells its longest-edge path needs), which halves it.
-      for (std::size_t n_before = 0; n_before != mesh.triangles.size();)
+      // Passes over the cells: each cell too large is bisected once (with
+      // the cells its longest-edge path needs), which halves it. A cell
+      // that is small enough stays so until a bisection changes it, so
+      // after the first pass over all cells, a pass looks only at the
+      // cells the one before made or changed.
+      std::vector<unsigned int> candidates(mesh.triangles.size());
+      for (unsigned int c = 0; c < candidates.size(); ++c)
+        candidates[c] = c;
+      while (!candidates.empty())
         {
-          n_before = mesh.triangles.size();
           std::vector<std::pair<unsigned int, std::array<unsigned int, 3>>>
             too_large;
-          for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
+          for (const unsigned int c : candidates)
             {
               const auto    &t = mesh.triangles[c];
               const Point<2> centroid((mesh.vertices[t[0]] +
@@ -373,11 +382,16 @@ namespace ndda
               if (longest > bound * bound)
                 too_large.emplace_back(c, t);
             }
+          bisector.changed.clear();
           for (const auto &[c, shape] : too_large)
             // An earlier cell's path may have split c already: it is
             // smaller then, and the next pass looks at it again.
             while (mesh.triangles[c] == shape)
               bisector.lepp_step(c);
+          candidates.swap(bisector.changed);
+          std::sort(candidates.begin(), candidates.end());
+          candidates.erase(std::unique(candidates.begin(), candidates.end()),
+                           candidates.end());
         }
       return result;
     }

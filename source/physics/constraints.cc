@@ -2,8 +2,6 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <deal.II/dofs/dof_tools.h>
-
 #include <ndda/base/utilities.h>
 #include <ndda/kinematics/reduced_blocks.h>
 #include <ndda/physics/constraints.h>
@@ -14,33 +12,31 @@ namespace ndda
 
   NodeLocator::NodeLocator(const CrackableMesh &mesh,
                            const DoFHandler<2> &dof_handler,
-                           const Mapping<2>    &mapping)
+                           const DofMap        &dof_map)
     : mesh(mesh)
   {
-    // Which two dofs belong to the same node: per dof of component 0 the
-    // dof of component 1 at the same support point.
     const auto        &fe     = dof_handler.get_fe();
-    const unsigned int n_dofs = dof_handler.n_dofs();
+    const unsigned int n_dofs = dof_map.n_dofs;
+    // Which two dofs belong to the same node, and where the node is.
     partner.resize(n_dofs);
     component.resize(n_dofs);
-    std::vector<index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dofs);
-        for (unsigned int i = 0; i < dofs.size(); ++i)
-          {
-            const auto [c, base] = fe.system_to_component_index(i);
-            component[dofs[i]]   = c;
-            if (c == 0)
-              {
-                const unsigned int j = fe.component_to_system_index(1, base);
-                partner[dofs[i]]     = dofs[j];
-                partner[dofs[j]]     = dofs[i];
-              }
-          }
-      }
+    for (const auto &node : dof_map.node_dofs)
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          component[node[c]] = c;
+          partner[node[c]]   = node[1 - c];
+        }
     support_points.resize(n_dofs);
-    DoFTools::map_dofs_to_support_points(mapping, dof_handler, support_points);
+    const auto &unit = fe.get_unit_support_points();
+    for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
+      {
+        const auto *dofs      = dof_map.dofs_of_cell(cell->active_cell_index());
+        const Tensor<1, 2> e1 = cell->vertex(1) - cell->vertex(0);
+        const Tensor<1, 2> e2 = cell->vertex(2) - cell->vertex(0);
+        for (unsigned int i = 0; i < dof_map.dofs_per_cell; ++i)
+          support_points[dofs[i]] =
+            cell->vertex(0) + unit[i][0] * e1 + unit[i][1] * e2;
+      }
 
     on_boundary.assign(n_dofs, false);
     std::vector<index> face_dofs(fe.n_dofs_per_face());

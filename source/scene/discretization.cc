@@ -71,7 +71,7 @@ namespace ndda
     void
     Discretization::setup_constraints(const parameters::Parameters &parameters)
     {
-      const NodeLocator nodes(mesh, dof_handler, mapping);
+      const NodeLocator nodes(mesh, dof_handler, dof_map);
       if (parameters.control.linear_solver ==
           parameters::LinearSolverType::cg_amg)
         linear_system.get_linear_solver().set_rigid_body_modes(

@@ -53,6 +53,16 @@ namespace ndda
     find_crack_tips(const CrackableMesh &mesh);
 
     /**
+     * The same on plain arrays: @p mesh with its crack faces
+     * (geometry::BlockMesh::crack_edges) and the initial positions of its
+     * vertices, as CrackableMesh::crack() has them before it rebuilds the
+     * triangulation.
+     */
+    std::vector<CrackTip>
+    find_crack_tips(const geometry::BlockMesh           &mesh,
+                    const std::vector<dealii::Point<2>> &initial_vertices);
+
+    /**
      * K_I and K_II at a tip up to a common positive factor, by
      * displacement correlation: the jump of displacement across the crack
      * at the nodes behind the tip (CrackTip::behind; the +y' face's node

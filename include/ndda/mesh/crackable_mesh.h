@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,38 @@ namespace ndda
     /// get_block_mesh().crack_edges and CrackableMesh::is_cracked() cover
     /// every crack face of the mesh.
     std::vector<CrackedEdge> cracked_edges;
+    /// Set when crack() refined the cracked mesh (RefineAfterCrack) and
+    /// bisected at least one cell: the cells of the cracked mesh (whose
+    /// indices are those before the crack) to the refined one. The fields
+    /// above describe the cracked mesh before this refinement.
+    std::optional<refinement::RefineResult> refined;
+  };
+
+
+
+  /**
+   * A refinement that CrackableMesh::crack() does on the cracked mesh
+   * before it rebuilds the triangulation, so that a crack and the
+   * refinement around its tips cost one rebuild (Fracture/Tip mesh size).
+   *
+   * @ingroup mesh
+   */
+  struct RefineAfterCrack
+  {
+    /// The bound on the longest edge of a cell of block b whose centroid
+    /// is at x (CrackableMesh::refine()).
+    using SizeBound = std::function<double(unsigned int, const Point<2> &)>;
+
+    /// Given the cracked mesh and the initial positions of its vertices,
+    /// the size bound. Empty: no refinement.
+    std::function<SizeBound(const geometry::BlockMesh &,
+                            const std::vector<Point<2>> &)>
+      size_bound;
+    /// Refuse (ExcMessage naming @p what, mesh unchanged, not cracked
+    /// either) to make more cells than this.
+    unsigned int max_cells = 0;
+    /// What the refinement is for, to start its error messages.
+    std::string what;
   };
 
 
@@ -204,12 +237,17 @@ namespace ndda
      * looks at pairs of cells or vertices. The rebuild of the
      * triangulation dominates (doc/fracture_mesh.md has timings).
      *
+     * With @p refine, the cracked mesh is refined (as refine() does, with
+     * the size bound that @p refine makes from it) before the one check and
+     * rebuild; CrackResult::refined says how.
+     *
      * @param edges Edges to crack, as pairs of vertex indices of the
      *   current mesh, in either order.
      * @return The maps from the old mesh to the new one.
      */
     CrackResult
-    crack(const std::vector<std::array<unsigned int, 2>> &edges);
+    crack(const std::vector<std::array<unsigned int, 2>> &edges,
+          const RefineAfterCrack                         &refine = {});
 
     /**
      * Refine the mesh by longest-edge bisection until the longest edge of
@@ -228,9 +266,8 @@ namespace ndda
      *   cells than this.
      */
     refinement::RefineResult
-    refine(
-      const std::function<double(unsigned int, const Point<2> &)> &size_bound,
-      const unsigned int                                           max_cells);
+    refine(const RefineAfterCrack::SizeBound &size_bound,
+           const unsigned int                 max_cells);
 
     /**
      * Whether the edge between vertices @p a and @p b (in either order) is
