@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <ndda/physics/blas.h>
 #include <ndda/physics/finite_element.h>
 #include <ndda/scene/discretization.h>
 #include <ndda/scene/scene.h>
@@ -327,6 +328,7 @@ namespace ndda
           << ", vertices: " << mesh.get_triangulation().n_vertices()
           << ", degrees of freedom: " << dof_handler.n_dofs() << " ("
           << fe->base_element(0).get_name() << ")\n"
+          << "  BLAS: " << blas_description() << "\n"
           << "  constrained nodes: " << constraints.constrained_nodes().size();
       return out.str();
     }
