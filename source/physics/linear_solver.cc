@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ndda/physics/cholesky.h>
 #include <ndda/physics/linear_solver.h>
 
 #include <Epetra_MultiVector.h>
@@ -534,6 +535,10 @@ namespace ndda
 
   struct LinearSolver::Implementation
   {
+    CholeskyFactorization cholesky;
+    /// Linear solver = direct: whether the last factorization is the
+    /// Cholesky one (else UMFPACK's LU).
+    bool                              cholesky_active = false;
     Umfpack                           umfpack;
     Klu                               klu;
     TrilinosWrappers::SparseMatrix    trilinos_matrix;
@@ -596,6 +601,13 @@ namespace ndda
     auto &impl = *implementation;
     try
       {
+        if (type == parameters::LinearSolverType::direct)
+          {
+            impl.cholesky_active = impl.cholesky.factorize(matrix);
+            if (!impl.cholesky_active)
+              impl.umfpack.factorize(matrix);
+            return;
+          }
         if (type == parameters::LinearSolverType::umfpack)
           {
             impl.umfpack.factorize(matrix);
@@ -656,6 +668,10 @@ namespace ndda
   double
   LinearSolver::solves_per_factorization() const
   {
+    if (type == parameters::LinearSolverType::direct)
+      return implementation->cholesky_active ?
+               implementation->cholesky.solves_per_factorization() :
+               implementation->umfpack.solve_ratio;
     if (type == parameters::LinearSolverType::umfpack)
       return implementation->umfpack.solve_ratio;
     if (type == parameters::LinearSolverType::klu)
@@ -684,13 +700,19 @@ namespace ndda
     const unsigned int          min_iterations,
     const double                tolerance)
   {
-    auto      &impl    = *implementation;
-    const bool umfpack = type == parameters::LinearSolverType::umfpack;
-    const auto n       = static_cast<SuiteSparse_long>(matrix.m());
-    if (min_iterations == 0 ||
-        !(umfpack ?
-            impl.umfpack.size() == n :
-            type == parameters::LinearSolverType::klu && impl.klu.size() == n))
+    auto      &impl = *implementation;
+    const bool cholesky =
+      type == parameters::LinearSolverType::direct && impl.cholesky_active;
+    const bool umfpack =
+      type == parameters::LinearSolverType::umfpack ||
+      (type == parameters::LinearSolverType::direct && !impl.cholesky_active);
+    const auto             n = static_cast<SuiteSparse_long>(matrix.m());
+    const SuiteSparse_long factorized =
+      cholesky ? static_cast<SuiteSparse_long>(impl.cholesky.size()) :
+      umfpack  ? impl.umfpack.size() :
+      type == parameters::LinearSolverType::klu ? impl.klu.size() :
+                                                  -1;
+    if (min_iterations == 0 || factorized != n)
       return 0;
     x.reinit(b.size());
     const double norm = b.l2_norm();
@@ -701,6 +723,9 @@ namespace ndda
     auto &control = impl.reuse_control;
     control.reset(max_iterations, min_iterations, tolerance, norm);
     const bool converged =
+      cholesky ?
+        impl.gmres.solve(
+          matrix, x, b, impl.cholesky, control, max_iterations + 2) :
       umfpack ?
         impl.gmres.solve(
           matrix, x, b, impl.umfpack, control, max_iterations + 2) :
@@ -716,6 +741,14 @@ namespace ndda
   LinearSolver::solve(Vector<double> &x, const Vector<double> &b)
   {
     auto &impl = *implementation;
+    if (type == parameters::LinearSolverType::direct)
+      {
+        if (impl.cholesky_active)
+          impl.cholesky.solve(x, b);
+        else
+          impl.umfpack.solve(x, b);
+        return 1;
+      }
     if (type == parameters::LinearSolverType::umfpack)
       {
         impl.umfpack.solve(x, b);

@@ -32,6 +32,9 @@ namespace ndda
     /** The linear solver of Control/Linear solver (physics::LinearSolver). */
     enum class LinearSolverType
     {
+      /// Cholesky (CHOLMOD) where the matrix is symmetric positive
+      /// definite, LU (UMFPACK) where it is not.
+      direct,
       umfpack,
       klu,
       cg_amg

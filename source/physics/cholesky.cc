@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <deal.II/base/exceptions.h>
+
+#include <ndda/physics/cholesky.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <suitesparse/cholmod.h>
+#include <utility>
+#include <vector>
+
+namespace ndda
+{
+  using namespace dealii;
+
+  bool
+  is_symmetric(const SparseMatrix<double> &matrix, const double tolerance)
+  {
+    if (matrix.m() != matrix.n())
+      return false;
+    for (types::global_dof_index i = 0; i < matrix.m(); ++i)
+      for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+        {
+          const auto j = entry->column();
+          if (j <= i)
+            continue;
+          // el() is zero for an entry outside the pattern.
+          const double difference = std::abs(entry->value() - matrix.el(j, i));
+          if (difference > 0. &&
+              difference >
+                tolerance * std::sqrt(std::abs(matrix.diag_element(i) *
+                                               matrix.diag_element(j))))
+            return false;
+        }
+    return true;
+  }
+
+
+
+  struct CholeskyFactorization::Implementation
+  {
+    Implementation()
+    {
+      cholmod_l_start(&common);
+      // Not positive definite is an answer here, not an error to print.
+      common.print = 0;
+      // Always L L^T (supernodal): a simplicial L D L^T would factorize a
+      // symmetric indefinite matrix without a word.
+      common.supernodal = CHOLMOD_SUPERNODAL;
+    }
+
+    ~Implementation()
+    {
+      free_factor();
+      for (cholmod_dense **dense : {&x, &y, &e})
+        if (*dense != nullptr)
+          cholmod_l_free_dense(dense, &common);
+      cholmod_l_finish(&common);
+    }
+
+    void
+    free_factor()
+    {
+      if (factor != nullptr)
+        cholmod_l_free_factor(&factor, &common);
+      factor = nullptr;
+    }
+
+    /**
+     * The upper triangle of @p matrix by rows, sorted: the lower triangle
+     * by columns, as CHOLMOD reads it (stype -1). Returns whether the
+     * pattern changed.
+     */
+    bool
+    update(const SparseMatrix<double> &matrix)
+    {
+      const SuiteSparse_long        n = matrix.m();
+      std::vector<SuiteSparse_long> new_p(n + 1, 0), new_i;
+      new_i.reserve(matrix.n_nonzero_elements() / 2 + n);
+      values.clear();
+      std::vector<std::pair<SuiteSparse_long, double>> row;
+      for (SuiteSparse_long r = 0; r < n; ++r)
+        {
+          row.clear();
+          for (auto entry = matrix.begin(r); entry != matrix.end(r); ++entry)
+            if (static_cast<SuiteSparse_long>(entry->column()) >= r)
+              row.emplace_back(entry->column(), entry->value());
+          std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
+            return a.first < b.first;
+          });
+          for (const auto &[c, value] : row)
+            {
+              new_i.push_back(c);
+              values.push_back(value);
+            }
+          new_p[r + 1] = new_i.size();
+        }
+      if (new_p == p && new_i == i)
+        return false;
+      p.swap(new_p);
+      i.swap(new_i);
+      return true;
+    }
+
+    /** A CHOLMOD view of the arrays (no copy). */
+    cholmod_sparse
+    view()
+    {
+      cholmod_sparse a = {};
+      a.nrow           = p.size() - 1;
+      a.ncol           = p.size() - 1;
+      a.nzmax          = i.size();
+      a.p              = p.data();
+      a.i              = i.data();
+      a.x              = values.data();
+      a.stype          = -1;
+      a.itype          = CHOLMOD_LONG;
+      a.xtype          = CHOLMOD_REAL;
+      a.dtype          = CHOLMOD_DOUBLE;
+      a.sorted         = 1;
+      a.packed         = 1;
+      return a;
+    }
+
+    void
+    solve(Vector<double> &result, const Vector<double> &b)
+    {
+      AssertThrow(factor != nullptr && b.size() == p.size() - 1,
+                  ExcMessage("CHOLMOD: no factorization of this size."));
+      cholmod_dense rhs = {};
+      rhs.nrow          = b.size();
+      rhs.ncol          = 1;
+      rhs.nzmax         = b.size();
+      rhs.d             = b.size();
+      rhs.x             = const_cast<double *>(b.begin());
+      rhs.xtype         = CHOLMOD_REAL;
+      rhs.dtype         = CHOLMOD_DOUBLE;
+      AssertThrow(
+        cholmod_l_solve2(
+          CHOLMOD_A, factor, &rhs, nullptr, &x, nullptr, &y, &e, &common),
+        ExcMessage("CHOLMOD: the solve failed with status " +
+                   std::to_string(common.status) + "."));
+      result.reinit(b.size(), true);
+      const double *solution = static_cast<const double *>(x->x);
+      std::copy(solution, solution + b.size(), result.begin());
+    }
+
+    cholmod_common                common;
+    cholmod_factor               *factor = nullptr;
+    std::vector<SuiteSparse_long> p, i;
+    std::vector<double>           values;
+    /// CHOLMOD's solve workspace, kept from solve to solve.
+    cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
+    double         solve_ratio = 0;
+    /// Whether the last factorization with this pattern found the matrix
+    /// not positive definite.
+    bool refused = false;
+  };
+
+
+
+  CholeskyFactorization::CholeskyFactorization()
+    : implementation(std::make_unique<Implementation>())
+  {}
+
+
+
+  CholeskyFactorization::~CholeskyFactorization() = default;
+
+
+
+  bool
+  CholeskyFactorization::factorize(const SparseMatrix<double> &matrix)
+  {
+    auto &impl = *implementation;
+    if (!is_symmetric(matrix))
+      return false;
+    const bool     new_pattern = impl.update(matrix);
+    cholmod_sparse a           = impl.view();
+    if (new_pattern || impl.factor == nullptr)
+      {
+        impl.free_factor();
+        impl.factor = cholmod_l_analyze(&a, &impl.common);
+        AssertThrow(impl.factor != nullptr,
+                    ExcMessage("CHOLMOD: the analysis failed with status " +
+                               std::to_string(impl.common.status) + "."));
+      }
+    else if (impl.refused)
+      // Not positive definite before, with this pattern: the values of a
+      // step rarely change that, so LU is taken at once.
+      return false;
+    impl.refused = false;
+    if (!cholmod_l_factorize(&a, impl.factor, &impl.common) ||
+        impl.common.status == CHOLMOD_NOT_POSDEF)
+      {
+        // The analysis stays for this pattern, marked as refused.
+        impl.refused = true;
+        return false;
+      }
+    // Flops of the factorization (CHOLMOD's count from the analysis) over
+    // those of a solve: 2 nnz(L) multiply-adds, and a product with A.
+    impl.solve_ratio =
+      impl.common.fl / (2. * (2. * impl.common.lnz + 2. * impl.i.size()));
+    return true;
+  }
+
+
+
+  void
+  CholeskyFactorization::solve(Vector<double> &x, const Vector<double> &b)
+  {
+    implementation->solve(x, b);
+  }
+
+
+
+  void
+  CholeskyFactorization::vmult(Vector<double> &x, const Vector<double> &b) const
+  {
+    // CHOLMOD's solve does not change the factorization; its interface
+    // just does not say const.
+    implementation->solve(x, b);
+  }
+
+
+
+  std::size_t
+  CholeskyFactorization::size() const
+  {
+    const auto &impl = *implementation;
+    return impl.factor == nullptr || impl.refused ? 0 : impl.p.size() - 1;
+  }
+
+
+
+  double
+  CholeskyFactorization::solves_per_factorization() const
+  {
+    return implementation->solve_ratio;
+  }
+} // namespace ndda
