@@ -114,8 +114,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const SparsityPattern            pattern = five_point_pattern();
-  SparseMatrix<double>             spd(pattern), indefinite(pattern),
-    nonsymmetric(pattern);
+  SparseMatrix<double> spd(pattern), indefinite(pattern), nonsymmetric(pattern);
   fill(spd, 0.01);
   fill(indefinite, 0.01);
   indefinite.set(n / 2, n / 2, -3.);
