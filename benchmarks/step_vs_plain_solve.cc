@@ -48,6 +48,10 @@
  * the case and less the triangulation copy kept for the plain solve,
  * divided by the number of DoFs.
  *
+ * With NDDA_STEADY_STEPS=N, N steady steps are timed (default 10; more
+ * for a profile of the steady step), and with NDDA_TIMER_TABLE=1 ndda's
+ * timer table of each case goes to stderr.
+ *
  * Usage: step_vs_plain_solve [target n_dofs ...]   (default: 1e4 1e5)
  */
 
@@ -80,6 +84,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -97,11 +102,17 @@ namespace
   // The scene; the plain solve uses the same numbers.
   const double length = 4., height = 1.;
   const double density = 2500., youngs_modulus = 10e9, poissons_ratio = 0.25;
-  const double thickness            = 1.;
-  const double gravity              = -9.81; // m/s^2, y direction
-  const double pressure             = 1e5;   // Pa on the top edge
-  const double time_step            = 1e-4;  // s
-  const unsigned int n_steady_steps = 10;
+  const double thickness = 1.;
+  const double gravity   = -9.81; // m/s^2, y direction
+  const double pressure  = 1e5;   // Pa on the top edge
+  const double time_step = 1e-4;  // s
+  /** The steady steps timed after the first: NDDA_STEADY_STEPS, or 10. */
+  unsigned int
+  n_steady_steps()
+  {
+    const char *text = std::getenv("NDDA_STEADY_STEPS");
+    return text != nullptr && std::atoi(text) > 0 ? std::atoi(text) : 10;
+  }
 
   using Clock = std::chrono::steady_clock;
 
@@ -457,7 +468,7 @@ main(int argc, char **argv)
             simulator.do_time_step();
             first_step = seconds_since(start);
             ndda_first = simulator.get_displacement();
-            for (unsigned int s = 0; s < n_steady_steps; ++s)
+            for (unsigned int s = 0; s < n_steady_steps(); ++s)
               {
                 start = Clock::now();
                 simulator.do_time_step();
@@ -465,6 +476,8 @@ main(int argc, char **argv)
               }
             n_factorizations = simulator.n_factorizations();
             ndda_peak_rss    = status_bytes("VmHWM");
+            if (std::getenv("NDDA_TIMER_TABLE") != nullptr)
+              simulator.get_timer().print_summary(std::cerr);
           }
           const double mean_step =
             std::accumulate(steady.begin(), steady.end(), 0.) / steady.size();

@@ -407,7 +407,6 @@ namespace ndda
     const std::vector<double> rotation =
       rotate_blocks(mesh,
                     fem.dof_map,
-                    fem.element_cache,
                     stresses,
                     fem.block_nodes,
                     solved_rotation,

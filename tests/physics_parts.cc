@@ -12,6 +12,8 @@
 //    infinitesimal rotation by theta leaves the strain zero and turns an
 //    initial stress by theta (sigma <- R sigma R^T); the user's law doubles
 //    the stress of the stretch;
+//  - rotation::step_strain(): the stretch and the rotation of
+//    F = (I + E) R(theta) to round-off, for turns of 1e-9 to 2.5 rad;
 //  - LinearSystem and OpenCloseSolver (no contacts: one solve): for the
 //    step matrix K + M / dt^2 and the right-hand side M t / dt^2 of a rigid
 //    translation t, the solve gives t back (K t = 0), and the mass solve
@@ -32,6 +34,7 @@
 #include <ndda/physics/finite_element.h>
 #include <ndda/physics/linear_solver.h>
 #include <ndda/physics/linear_system.h>
+#include <ndda/physics/rotation.h>
 #include <ndda/physics/stress_field.h>
 
 #include <functional>
@@ -175,7 +178,7 @@ namespace
       dof_handler.distribute_dofs(*element->system);
       dof_map.reinit(dof_handler);
       cache.set_quadratures(element->cell_quadrature, element->mass_quadrature);
-      cache.update(dof_handler, mapping, materials, false, 0.);
+      cache.update(dof_handler, dof_map, mapping, materials, false, 0.);
       cell_material.assign(mesh.get_triangulation().n_active_cells(), 0);
       stresses.initialize(
         cache, dof_map, materials, cell_material, mesh.get_triangulation());
@@ -295,6 +298,7 @@ namespace
             sigma[0][0] = sigma_xx;
         const unsigned int n_computed =
           square.cache.update(square.dof_handler,
+                              square.dof_map,
                               square.mapping,
                               square.materials,
                               true,
@@ -314,6 +318,7 @@ namespace
     // cells that moved: none.
     Square unmoved(element_name, read_materials(""));
     check(unmoved.cache.update(unmoved.dof_handler,
+                               unmoved.dof_map,
                                unmoved.mapping,
                                unmoved.materials,
                                true,
@@ -372,6 +377,48 @@ namespace
               << " rad, sigma_xy = " << square.stresses.mean(0)[0][1]
               << " Pa, internal force turned, strain energy " << energy
               << " J (before " << energy0 << " J)" << std::endl;
+  }
+
+  /**
+   * rotation::step_strain() without trigonometric functions: for
+   * F = (I + E) R(theta), E symmetric, the strain is E and the rotation's
+   * cos - 1 and sin are those of theta, to round-off, for turns from
+   * 1e-9 rad (where cos - 1 computed as cos(theta) - 1 would be 0) to
+   * 2.5 rad (a < 0).
+   */
+  void
+  check_step_strain()
+  {
+    SymmetricTensor<2, 2> E;
+    E[0][0] = 2e-4;
+    E[1][1] = -1e-4;
+    E[0][1] = 5e-5;
+    for (const double theta : {0., 1e-9, 1e-4, 0.3, 2.5, -1.})
+      {
+        const double half          = std::sin(0.5 * theta);
+        const double cos_minus_one = -2. * half * half, sin = std::sin(theta);
+        // G = F - I = E R + (R - I), without the cancellation of F - I.
+        Tensor<2, 2> G = E * rotation::matrix(cos_minus_one, sin);
+        G[0][0] += cos_minus_one;
+        G[1][1] += cos_minus_one;
+        G[0][1] -= sin;
+        G[1][0] += sin;
+        const rotation::StepStrain step = rotation::step_strain(G);
+        const std::string at = " at theta = " + Utilities::to_string(theta);
+        // G's skew part carries the round-off of E's entries: ~1e-16 |E|
+        // in sin, ~1e-16 |E| |sin| in cos - 1.
+        check(std::abs(step.sin - sin) <=
+                  1e-14 * std::abs(sin) + 1e-15 * E.norm() &&
+                std::abs(step.cos_minus_one - cos_minus_one) <=
+                  1e-14 * std::abs(cos_minus_one) +
+                    1e-15 * E.norm() * std::abs(sin),
+              "step_strain: the rotation" + at);
+        check((step.strain - E).norm() <= 1e-12 * E.norm(),
+              "step_strain: the stretch" + at);
+      }
+    std::cout << "step_strain: stretch and rotation of F = (I + E) R, theta "
+                 "from 1e-9 to 2.5 rad"
+              << std::endl;
   }
 
   /** A rigid translation through LinearSystem and OpenCloseSolver. */
@@ -517,6 +564,7 @@ main(int argc, char **argv)
           std::find(names.begin(), names.end(), "stress softening") !=
             names.end(),
         "the laws registered");
+  check_step_strain();
   for (const std::string element : {"FE_SimplexP(1)", "FE_SimplexP(2)"})
     {
       check_stretch(element, "", 1.);

@@ -3,6 +3,8 @@
 #include <ndda/physics/block_rotation.h>
 #include <ndda/physics/rotation.h>
 
+#include <algorithm>
+
 namespace ndda
 {
   namespace
@@ -44,19 +46,17 @@ namespace ndda
     /** The present position of every node (the straight-sided cells'
      * affine map of the element's unit support points). */
     std::vector<Point<2>>
-    node_positions(const CrackableMesh   &mesh,
-                   const DofMap          &dof_map,
-                   const ElementCache<2> &element_cache)
+    node_positions(const CrackableMesh &mesh, const DofMap &dof_map)
     {
       const auto           &vertices = mesh.get_triangulation().get_vertices();
       const auto           &support  = dof_map.fe->get_unit_support_points();
       std::vector<Point<2>> position(dof_map.node_dofs.size());
       for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
         {
-          const auto        &v    = element_cache[c].vertex_indices;
-          const auto        *dofs = dof_map.dofs_of_cell(c);
-          const Tensor<1, 2> e1   = vertices[v[1]] - vertices[v[0]];
-          const Tensor<1, 2> e2   = vertices[v[2]] - vertices[v[0]];
+          const unsigned int *v    = dof_map.vertices_of_cell(c);
+          const auto         *dofs = dof_map.dofs_of_cell(c);
+          const Tensor<1, 2>  e1   = vertices[v[1]] - vertices[v[0]];
+          const Tensor<1, 2>  e2   = vertices[v[2]] - vertices[v[0]];
           for (unsigned int i = 0; i < dof_map.dofs_per_cell; ++i)
             if (dof_map.local_component[i] == 0)
               position[dof_map.dof_to_node[dofs[i]]] =
@@ -134,11 +134,16 @@ namespace ndda
                   const Vector<double> &d)
   {
     std::vector<double> spin(mesh.n_blocks(), 0.), area(mesh.n_blocks(), 0.);
+    // The cells of a block held at two or more nodes are not visited:
+    // its rotation is 0 whatever they hold.
     for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
       {
+        const unsigned int b = mesh.block_of_cell(c);
+        if (nodes.n_constrained[b] > 1)
+          continue;
         const auto [s, a] = stresses.cell_rotation(c, d);
-        spin[mesh.block_of_cell(c)] += s;
-        area[mesh.block_of_cell(c)] += a;
+        spin[b] += s;
+        area[b] += a;
       }
     std::vector<double> rotation(mesh.n_blocks(), 0.);
     for (unsigned int b = 0; b < rotation.size(); ++b)
@@ -161,11 +166,10 @@ namespace ndda
     // Per cell of a turning block, v = (I - R^T) d + theta R^T J (x - x_0)
     // at its nodes (x_0 its first node: K takes no force from a constant),
     // in the frame of the block; k v is the cell's share of Q K Q^T v.
-    const std::vector<Point<2>> position =
-      node_positions(mesh, dof_map, element_cache);
-    const unsigned int  n_dofs = dof_map.dofs_per_cell;
-    Vector<double>      z(rhs.size());
-    std::vector<double> v(n_dofs), kv(n_dofs);
+    const std::vector<Point<2>> position = node_positions(mesh, dof_map);
+    const unsigned int          n_dofs   = dof_map.dofs_per_cell;
+    Vector<double>              z(rhs.size());
+    std::vector<double>         v(n_dofs), kv(n_dofs);
     for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
       {
         const double theta = rotation[mesh.block_of_cell(c)];
@@ -207,7 +211,6 @@ namespace ndda
   std::vector<double>
   rotate_blocks(const CrackableMesh       &mesh,
                 const DofMap              &dof_map,
-                const ElementCache<2>     &element_cache,
                 const StressField         &stresses,
                 const BlockNodes          &nodes,
                 const std::vector<double> &solved_rotation,
@@ -219,6 +222,16 @@ namespace ndda
   {
     const unsigned int n_nodes = dof_map.node_dofs.size();
     AssertDimension(nodes.block.size(), n_nodes);
+    std::vector<double> rotation =
+      solved_rotation.empty() ?
+        block_rotations(mesh, dof_map, stresses, nodes, d) :
+        solved_rotation;
+    AssertDimension(rotation.size(), mesh.n_blocks());
+    // No block turned: nothing to correct.
+    if (std::all_of(rotation.begin(), rotation.end(), [](const double theta) {
+          return theta == 0.;
+        }))
+      return rotation;
     const auto        &node_block  = nodes.block;
     const auto        &constrained = nodes.constrained;
     const auto        &node_mass   = nodes.mass;
@@ -229,8 +242,7 @@ namespace ndda
     // The centre of each block, its velocity, acceleration and increment:
     // the mass-weighted means over its nodes, or the plain means over its
     // constrained nodes.
-    const std::vector<Point<2>> position =
-      node_positions(mesh, dof_map, element_cache);
+    const std::vector<Point<2>> position = node_positions(mesh, dof_map);
     for (unsigned int n = 0; n < n_nodes; ++n)
       {
         if (node_block[n] == numbers::invalid_unsigned_int)
@@ -251,11 +263,6 @@ namespace ndda
             Tensor<1, 2>({(*acceleration)[dofs[0]], (*acceleration)[dofs[1]]});
       }
 
-    std::vector<double> rotation =
-      solved_rotation.empty() ?
-        block_rotations(mesh, dof_map, stresses, nodes, d) :
-        solved_rotation;
-    AssertDimension(rotation.size(), blocks.size());
     for (unsigned int b = 0; b < blocks.size(); ++b)
       if (blocks[b].weight == 0.)
         rotation[b] = 0.;

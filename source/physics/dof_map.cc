@@ -18,6 +18,11 @@ namespace ndda
     dofs_per_cell  = fe.n_dofs_per_cell();
     cell_dofs.resize(dof_handler.get_triangulation().n_active_cells() *
                      dofs_per_cell);
+    vertices_per_cell = dof_handler.get_triangulation().n_active_cells() > 0 ?
+                          dof_handler.begin_active()->n_vertices() :
+                          0;
+    cell_vertices.resize(dof_handler.get_triangulation().n_active_cells() *
+                         vertices_per_cell);
     local_component.resize(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       local_component[i] = fe.system_to_component_index(i).first;
@@ -32,6 +37,9 @@ namespace ndda
                   dofs.end(),
                   cell_dofs.begin() +
                     cell->active_cell_index() * dofs_per_cell);
+        for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+          cell_vertices[cell->active_cell_index() * vertices_per_cell + v] =
+            cell->vertex_index(v);
         for (unsigned int v = 0; v < cell->n_vertices(); ++v)
           for (unsigned int c = 0; c < 2; ++c)
             vertex_dofs[cell->vertex_index(v)][c] =

@@ -4,38 +4,46 @@
 
 #include <ndda/physics/element_cache.h>
 
+#include <algorithm>
+
 namespace ndda
 {
   namespace
   {
     /**
-     * Whether @p cell moved by more than @p distance from @p vertices,
-     * measured relative to its centroid: a translation does not change the
-     * element matrices.
+     * Whether the cell of vertices @p now (the triangulation's vertices
+     * @p positions at the indices @p now) moved by more than @p distance
+     * from @p then, measured relative to its centroid and turned back by
+     * @p turned, the turn of its block's frame since then: a translation,
+     * or a turn with the frame, does not change the element matrices.
      */
-    template <typename CellIterator>
     bool
-    moved_beyond(const CellIterator          &cell,
-                 const std::vector<Point<2>> &vertices,
-                 const double                 distance,
-                 const double                 turned)
+    moved_beyond(const unsigned int            *now,
+                 const std::vector<Point<2>>   &positions,
+                 const std::array<Point<2>, 3> &then,
+                 const double                   distance,
+                 const double                   turned)
     {
-      Point<2> now, then;
-      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+      const unsigned int n = then.size();
+      Tensor<1, 2>       now_centre, then_centre;
+      for (unsigned int v = 0; v < n; ++v)
         {
-          now += cell->vertex(v) / cell->n_vertices();
-          then += vertices[v] / cell->n_vertices();
+          now_centre += positions[now[v]];
+          then_centre += then[v];
         }
-      // Turn the present shape back by the frame's turn since then.
-      const double c = std::cos(turned), s = std::sin(turned);
-      double       moved = 0;
-      for (unsigned int v = 0; v < cell->n_vertices(); ++v)
+      now_centre /= n;
+      then_centre /= n;
+      const double c      = turned == 0. ? 1. : std::cos(turned),
+                   s      = turned == 0. ? 0. : std::sin(turned);
+      const double square = distance * distance;
+      for (unsigned int v = 0; v < n; ++v)
         {
-          const Tensor<1, 2> r = cell->vertex(v) - now;
+          const Tensor<1, 2> r = positions[now[v]] - now_centre;
           const Tensor<1, 2> back({c * r[0] + s * r[1], -s * r[0] + c * r[1]});
-          moved = std::max(moved, (back - (vertices[v] - then)).norm());
+          if ((back - (then[v] - then_centre)).norm_square() > square)
+            return true;
         }
-      return moved > distance;
+      return false;
     }
 
 
@@ -79,7 +87,7 @@ namespace ndda
     /** The edge vectors p1 - p0 and p2 - p0 of a triangle as columns. */
     template <int dim>
     Tensor<2, dim>
-    edge_matrix(const std::vector<Point<dim>> &p)
+    edge_matrix(const std::array<Point<dim>, dim + 1> &p)
     {
       Tensor<2, dim> e;
       for (unsigned int k = 0; k < dim; ++k)
@@ -113,20 +121,16 @@ namespace ndda
 
 
 
-    /** The geometry the data of @p cell are computed on, into @p d. */
-    template <typename CellIterator, typename CellData>
+    /** The geometry the data of @p cell are computed on, into @p g. */
+    template <typename CellIterator, typename CellGeometry>
     void
-    record_geometry(const CellIterator &cell, CellData &d)
+    record_geometry(const CellIterator &cell, CellGeometry &g)
     {
-      d.vertices.resize(cell->n_vertices());
-      d.vertex_indices.resize(cell->n_vertices());
+      AssertDimension(cell->n_vertices(), g.vertices.size());
       for (unsigned int v = 0; v < cell->n_vertices(); ++v)
-        {
-          d.vertices[v]       = cell->vertex(v);
-          d.vertex_indices[v] = cell->vertex_index(v);
-        }
-      d.reference_inverse = invert(edge_matrix(d.vertices));
-      d.diameter          = cell->diameter();
+        g.vertices[v] = cell->vertex(v);
+      g.reference_inverse = invert(edge_matrix(g.vertices));
+      g.diameter          = cell->diameter();
     }
 
 
@@ -185,35 +189,35 @@ namespace ndda
 
 
     /**
-     * The gradient of every shape function, t JxW and the stiffness
-     * t int B^T C B at the points of @p values (the cell quadrature), into
-     * @p d (sized before).
+     * The gradient of every shape function and t JxW at the points of
+     * @p values (the cell quadrature), into @p gradient and @p weight (the
+     * cell's entries of the flat arrays), and the stiffness
+     * t int B^T C B into @p stiffness.
      */
-    template <int dim, typename CellData>
+    template <int dim>
     void
     add_operators(const FEValues<dim>                        &values,
                   const std::vector<SymmetricTensor<4, dim>> &C,
                   const double                                t,
-                  CellData                                   &d)
+                  FullMatrix<double>                         &stiffness,
+                  Tensor<2, dim>                             *gradient,
+                  double                                     *weight)
     {
       const FEValuesExtractors::Vector u(0);
       const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
-      d.stiffness.reinit(n_dofs, n_dofs);
-      d.gradient.resize(values.n_quadrature_points * n_dofs);
-      d.weight.resize(values.n_quadrature_points);
+      stiffness.reinit(n_dofs, n_dofs);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         {
-          d.weight[q] = t * values.JxW(q);
+          weight[q] = t * values.JxW(q);
           for (unsigned int i = 0; i < n_dofs; ++i)
-            d.gradient[q * n_dofs + i] = values[u].gradient(i, q);
+            gradient[q * n_dofs + i] = values[u].gradient(i, q);
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const SymmetricTensor<2, dim> Ceps_i =
-                C[q] * symmetrize(d.gradient[q * n_dofs + i]);
+                C[q] * symmetrize(gradient[q * n_dofs + i]);
               for (unsigned int j = 0; j < n_dofs; ++j)
-                d.stiffness(i, j) +=
-                  (Ceps_i * symmetrize(d.gradient[q * n_dofs + j])) *
-                  d.weight[q];
+                stiffness(i, j) +=
+                  (Ceps_i * symmetrize(gradient[q * n_dofs + j])) * weight[q];
             }
         }
     }
@@ -238,13 +242,29 @@ namespace ndda
   {
     if (data.size() != refined.n_old_cells)
       return; // nothing computed yet: update() computes every cell
-    std::vector<CellData> carried(refined.cell_origin.size());
-    for (unsigned int c = 0; c < carried.size(); ++c)
+    const unsigned int    n_cells = refined.cell_origin.size();
+    std::vector<CellData> carried(n_cells);
+    // The parts of bisected cells start with no geometry (diameter 0):
+    // update() computes them.
+    std::vector<CellGeometry>   carried_geometry(n_cells);
+    const unsigned int          n_gradients = n_q_points * dofs_per_cell;
+    std::vector<Tensor<2, dim>> carried_gradients(std::size_t(n_cells) *
+                                                  n_gradients);
+    std::vector<double> carried_weights(std::size_t(n_cells) * n_q_points);
+    for (unsigned int c = 0; c < n_cells; ++c)
       {
         // A cell not bisected is its own origin, which has no parts.
         if (!refined.is_part[c])
           {
-            carried[c] = std::move(data[c]);
+            carried[c]          = std::move(data[c]);
+            carried_geometry[c] = geometry[c];
+            std::copy_n(gradients.begin() + std::size_t(c) * n_gradients,
+                        n_gradients,
+                        carried_gradients.begin() +
+                          std::size_t(c) * n_gradients);
+            std::copy_n(weights.begin() + std::size_t(c) * n_q_points,
+                        n_q_points,
+                        carried_weights.begin() + std::size_t(c) * n_q_points);
             continue;
           }
         const auto &old = data[refined.cell_origin[c]];
@@ -257,6 +277,23 @@ namespace ndda
         carried[c].initial_area = old.initial_area * share;
       }
     data.swap(carried);
+    geometry.swap(carried_geometry);
+    gradients.swap(carried_gradients);
+    weights.swap(carried_weights);
+  }
+
+
+
+  template <int dim>
+  void
+  ElementCache<dim>::resize(const unsigned int n_cells)
+  {
+    data.clear();
+    data.resize(n_cells);
+    geometry.assign(n_cells, CellGeometry());
+    gradients.assign(std::size_t(n_cells) * n_q_points * dofs_per_cell,
+                     Tensor<2, dim>());
+    weights.assign(std::size_t(n_cells) * n_q_points, 0.);
   }
 
 
@@ -264,30 +301,38 @@ namespace ndda
   template <int dim>
   std::vector<typename DoFHandler<dim>::active_cell_iterator>
   ElementCache<dim>::select_cells(const DoFHandler<dim>     &dof_handler,
+                                  const DofMap              &dof_map,
                                   const bool                 only_moved_cells,
                                   const double               tolerance,
                                   const std::vector<double> *frame_angles)
   {
     computed_cells.clear();
+    const auto &positions = dof_handler.get_triangulation().get_vertices();
+    for (unsigned int c = 0; c < geometry.size(); ++c)
+      {
+        const CellGeometry &g = geometry[c];
+        if (only_moved_cells && g.diameter > 0. &&
+            !moved_beyond(dof_map.vertices_of_cell(c),
+                          positions,
+                          g.vertices,
+                          tolerance * g.diameter,
+                          (frame_angles != nullptr ? (*frame_angles)[c] : 0.) -
+                            g.frame_angle))
+          continue;
+        computed_cells.push_back(c);
+      }
     std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
+    cells.reserve(computed_cells.size());
+    auto next = computed_cells.begin();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        CellData &d = data[cell->active_cell_index()];
-        // A crack renumbers vertices without moving them: the deformation
-        // gradient reads the present positions through these indices.
-        for (unsigned int v = 0; v < d.vertex_indices.size(); ++v)
-          d.vertex_indices[v] = cell->vertex_index(v);
-        const double frame_angle =
-          frame_angles != nullptr ? (*frame_angles)[cell->active_cell_index()] :
-                                    0.;
-        if (only_moved_cells && !d.vertices.empty() &&
-            !moved_beyond(cell,
-                          d.vertices,
-                          tolerance * d.diameter,
-                          frame_angle - d.frame_angle))
-          continue;
-        computed_cells.push_back(cell->active_cell_index());
-        cells.push_back(cell);
+        if (next == computed_cells.end())
+          break;
+        if (cell->active_cell_index() == *next)
+          {
+            cells.push_back(cell);
+            ++next;
+          }
       }
     return cells;
   }
@@ -298,6 +343,7 @@ namespace ndda
   unsigned int
   ElementCache<dim>::update(
     const DoFHandler<dim>                                   &dof_handler,
+    const DofMap                                            &dof_map,
     const Mapping<dim>                                      &mapping,
     const parameters::Materials                             &materials,
     const bool                                               only_moved_cells,
@@ -309,13 +355,14 @@ namespace ndda
     AssertThrow(quadrature.size() > 0 && mass_quadrature.size() > 0,
                 ExcMessage("ElementCache::update(): call set_quadratures() "
                            "with the element's quadratures first."));
-    n_q_points = quadrature.size();
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
-    if (data.size() != n_cells)
+    if (data.size() != n_cells || n_q_points != quadrature.size() ||
+        dofs_per_cell != fe.n_dofs_per_cell())
       {
-        data.clear();
-        data.resize(n_cells);
+        n_q_points    = quadrature.size();
+        dofs_per_cell = fe.n_dofs_per_cell();
+        resize(n_cells);
       }
     law = law_of(materials);
     // A tangent that depends on the stress changes wherever the stress
@@ -325,6 +372,7 @@ namespace ndda
     // The cells to compute, first: in most steps none has moved, and the
     // FEValues below cost more than the check.
     const auto cells = select_cells(dof_handler,
+                                    dof_map,
                                     only_moved_cells && !point_tangents,
                                     tolerance,
                                     frame_angles);
@@ -368,12 +416,18 @@ namespace ndda
         const double density =
           conserved_density(fe_values, material.density, d);
 
-        add_operators(fe_values, C, t, d);
-        d.frame_angle = frame_angle;
+        add_operators(fe_values,
+                      C,
+                      t,
+                      d.stiffness,
+                      gradients.data() +
+                        std::size_t(c) * n_q_points * dofs_per_cell,
+                      weights.data() + std::size_t(c) * n_q_points);
         if (frame_angle != 0.)
           turn_to_frame(d.stiffness, partner, component, frame_angle);
         add_mass_matrix(mass_values, density * t, d.mass);
-        record_geometry(cell, d);
+        record_geometry(cell, geometry[c]);
+        geometry[c].frame_angle = frame_angle;
       }
     return computed_cells.size();
   }

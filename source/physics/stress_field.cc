@@ -5,6 +5,27 @@
 
 namespace ndda
 {
+  namespace
+  {
+    /**
+     * Each cell's stresses are a heap block of their own, wherever the
+     * allocator put it: a loop over all cells would wait for one cache
+     * miss per cell. It asks for the block of the cell this many cells
+     * ahead of the one it works on.
+     */
+    constexpr unsigned int prefetch_distance = 8;
+
+    void
+    prefetch(const std::vector<std::vector<StressField::Stress>> &stress,
+             const unsigned int                                   cell)
+    {
+      if (cell < stress.size())
+        __builtin_prefetch(stress[cell].data());
+    }
+  } // namespace
+
+
+
   void
   StressField::initialize(const ElementCache<2>           &element_cache,
                           const DofMap                    &dof_map,
@@ -33,6 +54,7 @@ namespace ndda
   StressField::deformation_gradient(const unsigned int cell) const
   {
     return element_cache->deformation_gradient(cell,
+                                               dof_map->vertices_of_cell(cell),
                                                triangulation->get_vertices());
   }
 
@@ -54,24 +76,25 @@ namespace ndda
   StressField::cell_rotation(const unsigned int    c,
                              const Vector<double> &d) const
   {
-    const unsigned int n_dofs    = dof_map->dofs_per_cell;
-    const auto        &data      = (*element_cache)[c];
-    const auto        *dofs      = dof_map->dofs_of_cell(c);
-    const Tensor<2, 2> F         = deformation_gradient(c);
-    const Tensor<2, 2> F_inverse = invert(F);
-    const double       J         = determinant(F);
-    const bool         moves     = moves_in(c, d);
-    double             rotation = 0, area = 0;
+    const unsigned int  n_dofs    = dof_map->dofs_per_cell;
+    const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
+    const double       *weights   = element_cache->weights_of(c);
+    const auto         *dofs      = dof_map->dofs_of_cell(c);
+    const Tensor<2, 2>  F         = deformation_gradient(c);
+    const Tensor<2, 2>  F_inverse = invert(F);
+    const double        J         = determinant(F);
+    const bool          moves     = moves_in(c, d);
+    double              rotation = 0, area = 0;
     for (unsigned int q = 0; q < element_cache->n_quadrature_points(); ++q)
       {
-        area += J * data.weight[q];
+        area += J * weights[q];
         if (!moves)
           continue;
         Tensor<2, 2> gradient;
         for (unsigned int i = 0; i < n_dofs; ++i)
-          gradient += d[dofs[i]] * data.gradient[q * n_dofs + i];
+          gradient += d[dofs[i]] * gradients[q * n_dofs + i];
         const Tensor<2, 2> G = gradient * F_inverse;
-        rotation += 0.5 * (G[1][0] - G[0][1]) * J * data.weight[q];
+        rotation += 0.5 * (G[1][0] - G[0][1]) * J * weights[q];
       }
     return {rotation, area};
   }
@@ -91,27 +114,27 @@ namespace ndda
     // that does not move keeps its stresses (the law is not asked).
     if (!moves_in(c, d))
       return;
-    const unsigned int n_dofs    = dof_map->dofs_per_cell;
-    const auto        &data      = (*element_cache)[c];
-    const auto        *dofs      = dof_map->dofs_of_cell(c);
-    const unsigned int material  = (*cell_material)[c];
-    const auto        &law       = element_cache->get_constitutive_law();
-    const auto        &C         = element_cache->get_tangents()[material];
-    const Tensor<2, 2> F_inverse = invert(deformation_gradient(c));
+    const unsigned int  n_dofs    = dof_map->dofs_per_cell;
+    const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
+    const auto         *dofs      = dof_map->dofs_of_cell(c);
+    const unsigned int  material  = (*cell_material)[c];
+    const auto         &law       = element_cache->get_constitutive_law();
+    const auto         &C         = element_cache->get_tangents()[material];
+    const Tensor<2, 2>  F_inverse = invert(deformation_gradient(c));
     for (unsigned int q = 0; q < sigma.size(); ++q)
       {
         Tensor<2, 2> gradient;
         for (unsigned int i = 0; i < n_dofs; ++i)
-          gradient += d[dofs[i]] * data.gradient[q * n_dofs + i];
-        const auto [strain, angle] =
+          gradient += d[dofs[i]] * gradients[q * n_dofs + i];
+        const rotation::StepStrain step =
           rotation::step_strain(gradient * F_inverse);
-        if (angle != 0.)
-          {
-            const auto [cos_minus_one, sin] =
-              rotation::cos_minus_one_sin(angle);
-            sigma[q] = rotation::turn(sigma[q], 1. + cos_minus_one, sin);
-          }
-        law.update_stress(materials->materials[material], C, strain, sigma[q]);
+        if (step.sin != 0. || step.cos_minus_one != 0.)
+          sigma[q] =
+            rotation::turn(sigma[q], 1. + step.cos_minus_one, step.sin);
+        law.update_stress(materials->materials[material],
+                          C,
+                          step.strain,
+                          sigma[q]);
       }
   }
 
@@ -121,7 +144,10 @@ namespace ndda
   StressField::advance(const Vector<double> &d)
   {
     for (unsigned int c = 0; c < stress.size(); ++c)
-      advance(c, d, stress[c]);
+      {
+        prefetch(stress, c + prefetch_distance);
+        advance(c, d, stress[c]);
+      }
   }
 
 
@@ -130,13 +156,13 @@ namespace ndda
   StressField::mean(const unsigned int         cell,
                     const std::vector<Stress> &sigma) const
   {
-    const auto &data = (*element_cache)[cell];
-    Stress      mean;
-    double      area = 0;
+    const double *weights = element_cache->weights_of(cell);
+    Stress        mean;
+    double        area = 0;
     for (unsigned int q = 0; q < sigma.size(); ++q)
       {
-        mean += data.weight[q] * sigma[q];
-        area += data.weight[q];
+        mean += weights[q] * sigma[q];
+        area += weights[q];
       }
     return mean / area;
   }
@@ -176,8 +202,9 @@ namespace ndda
     std::vector<double> area(stress.size());
     for (unsigned int c = 0; c < stress.size(); ++c)
       {
-        for (const double w : (*element_cache)[c].weight)
-          area[c] += w;
+        const double *weights = element_cache->weights_of(c);
+        for (unsigned int q = 0; q < element_cache->n_quadrature_points(); ++q)
+          area[c] += weights[q];
         area[c] *= determinant(deformation_gradient(c));
       }
     return area;
@@ -205,24 +232,25 @@ namespace ndda
     double             energy = 0;
     for (unsigned int c = 0; c < dof_map->n_cells(); ++c)
       {
-        const auto        &data     = (*element_cache)[c];
-        const auto        *dofs     = dof_map->dofs_of_cell(c);
-        const unsigned int material = (*cell_material)[c];
-        const auto        &C        = element_cache->get_tangents()[material];
-        const Tensor<2, 2> F        = deformation_gradient(c);
-        const double       J        = determinant(F);
-        const Tensor<2, 2> F_inverse_transpose = transpose(invert(F));
+        prefetch(stress, c + prefetch_distance);
+        const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
+        const double       *weights   = element_cache->weights_of(c);
+        const auto         *dofs      = dof_map->dofs_of_cell(c);
+        const unsigned int  material  = (*cell_material)[c];
+        const auto         &C         = element_cache->get_tangents()[material];
+        const Tensor<2, 2>  F         = deformation_gradient(c);
+        const double        J         = determinant(F);
+        const Tensor<2, 2>  F_inverse_transpose = transpose(invert(F));
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const auto        &sigma = stress[c][q];
-            const Tensor<2, 2> P     = (J * data.weight[q]) *
-                                   (Tensor<2, 2>(sigma) * F_inverse_transpose);
+            const Tensor<2, 2> P =
+              (J * weights[q]) * (Tensor<2, 2>(sigma) * F_inverse_transpose);
             for (unsigned int i = 0; i < n_dofs; ++i)
-              force[dofs[i]] +=
-                scalar_product(data.gradient[q * n_dofs + i], P);
+              force[dofs[i]] += scalar_product(gradients[q * n_dofs + i], P);
             energy +=
               law.energy_density(materials->materials[material], C, sigma) * J *
-              data.weight[q];
+              weights[q];
           }
       }
     return energy;

@@ -56,7 +56,7 @@ namespace ndda
 
       if (element_matrices)
         element_cache.update(
-          dof_handler, mapping, parameters.materials, false, 0.);
+          dof_handler, dof_map, mapping, parameters.materials, false, 0.);
       double max_modulus = 0;
       for (const auto &m : parameters.materials.materials)
         max_modulus = std::max(max_modulus, m.youngs_modulus);
@@ -254,6 +254,7 @@ namespace ndda
         ElementCache<2>::tangent_depends_on_stress(parameters.materials);
       if (recompute &&
           element_cache.update(dof_handler,
+                               dof_map,
                                mapping,
                                parameters.materials,
                                tolerance > 0.,

@@ -88,7 +88,6 @@ namespace ndda
   std::vector<double>
   rotate_blocks(const CrackableMesh       &mesh,
                 const DofMap              &dof_map,
-                const ElementCache<2>     &element_cache,
                 const StressField         &stresses,
                 const BlockNodes          &nodes,
                 const std::vector<double> &solved_rotation,

@@ -39,6 +39,14 @@ namespace ndda
       return cell_dofs.data() + std::size_t(c) * dofs_per_cell;
     }
 
+    /** The triangulation's indices of the vertices of active cell @p c,
+     * vertices_per_cell of them. */
+    const unsigned int *
+    vertices_of_cell(const unsigned int c) const
+    {
+      return cell_vertices.data() + std::size_t(c) * vertices_per_cell;
+    }
+
     unsigned int
     n_cells() const
     {
@@ -53,6 +61,11 @@ namespace ndda
     unsigned int dofs_per_cell = 0;
     /// Dof indices of every cell, cell after cell.
     std::vector<index> cell_dofs;
+    /// Vertices of a cell.
+    unsigned int vertices_per_cell = 0;
+    /// The triangulation's vertex indices of every cell, cell after cell
+    /// (a crack renumbers them without moving the vertices).
+    std::vector<unsigned int> cell_vertices;
     /// Vector component of each local dof.
     std::vector<unsigned int> local_component;
     /// The (x, y) dofs of every vertex of the triangulation.

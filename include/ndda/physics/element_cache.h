@@ -15,8 +15,10 @@
 
 #include <ndda/mesh/refinement.h>
 #include <ndda/physics/constitutive_law.h>
+#include <ndda/physics/dof_map.h>
 #include <ndda/physics/physics_parameters.h>
 
+#include <array>
 #include <vector>
 
 namespace ndda
@@ -37,15 +39,21 @@ namespace ndda
    *   one point for P1, whose strain is constant; the stress lives at these
    *   points), the gradient of each shape function and t * JxW, so that
    *   stress updates and internal forces need no FEValues in the time
-   *   loop,
-   * - the cell's vertex indices and the inverse of its edge matrix
-   *   [X1 - X0, X2 - X0] at the moment of computation, so that the
-   *   deformation gradient F = dx/dX of the cell's (affine) motion since
-   *   then is two edge vectors times it (reference_inverse()): stresses
-   *   and internal forces are exact on the present geometry however far
-   *   the cell has turned since its data were computed (doc/theory.md). The
-   * mass matrix uses the mass quadrature, QGaussSimplex(p + 1). Both come with
-   * the element (physics/finite_element.h) through set_quadratures().
+   *   loop (gradients_of(), weights_of()),
+   * - the cell's vertices and the inverse of its edge matrix
+   *   [X1 - X0, X2 - X0] at the moment of computation (CellGeometry), so
+   *   that the deformation gradient F = dx/dX of the cell's (affine)
+   *   motion since then is two present edge vectors times it
+   *   (deformation_gradient()): stresses and internal forces are exact on
+   *   the present geometry however far the cell has turned since its data
+   *   were computed (doc/theory.md).
+   *
+   * The matrices are a record per cell (CellData); what the loops of every
+   * step read, the geometry and the operators, are flat arrays of their
+   * own, so that a pass over all cells streams through memory (doc/
+   * performance.md, "ndda's own work in a steady step"). The mass matrix
+   * uses the mass quadrature, QGaussSimplex(p + 1). Both come with the
+   * element (physics/finite_element.h) through set_quadratures().
    *
    * @ingroup physics
    */
@@ -59,21 +67,6 @@ namespace ndda
       FullMatrix<double> mass;
       /// Viscosity over density: the damping matrix is this times mass.
       double viscosity_over_density = 0;
-      /// gradient[q * n_dofs + i]: gradient of (vector) shape function i,
-      /// d phi_i / dX, on the geometry of the computation.
-      std::vector<Tensor<2, dim>> gradient;
-      /// thickness * JxW at each quadrature point.
-      std::vector<double> weight;
-      /// Vertex positions when the data were computed.
-      std::vector<Point<dim>> vertices;
-      /// The triangulation's indices of the cell's vertices.
-      std::vector<unsigned int> vertex_indices;
-      /// Inverse of the edge matrix [X1 - X0, X2 - X0] (columns) of the
-      /// vertices when the data were computed.
-      Tensor<2, dim> reference_inverse;
-      /// The angle of the block's frame when the data were computed.
-      double frame_angle = 0;
-      double diameter    = 0;
       /// Area at the first computation: the density is scaled by
       /// initial_area / area so that the mass of a cell never changes.
       double initial_area = 0;
@@ -82,9 +75,32 @@ namespace ndda
       void
       serialize(Archive &ar)
       {
-        ar &stiffness &mass &viscosity_over_density &gradient &weight &vertices
-          &vertex_indices &reference_inverse &frame_angle &diameter
-            &initial_area;
+        ar &stiffness &mass &viscosity_over_density &initial_area;
+      }
+    };
+
+    /**
+     * The geometry a cell's data were computed on. The loops of every
+     * step read it (the deformation gradient, the test for motion), so
+     * it lives in one array of its own, apart from the matrices.
+     */
+    struct CellGeometry
+    {
+      /// Vertex positions when the data were computed.
+      std::array<Point<dim>, dim + 1> vertices;
+      /// Inverse of the edge matrix [X1 - X0, X2 - X0] (columns) of the
+      /// vertices when the data were computed.
+      Tensor<2, dim> reference_inverse;
+      /// The angle of the block's frame when the data were computed.
+      double frame_angle = 0;
+      /// The cell's diameter then; 0: not computed yet.
+      double diameter = 0;
+
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar &vertices &reference_inverse &frame_angle &diameter;
       }
     };
 
@@ -97,7 +113,8 @@ namespace ndda
     void
     serialize(Archive &ar)
     {
-      ar &data &tangents &computed_cells;
+      ar &data &geometry &gradients &weights &dofs_per_cell &tangents
+        &computed_cells;
     }
 
     /**
@@ -135,6 +152,7 @@ namespace ndda
      */
     unsigned int
     update(const DoFHandler<dim>       &dof_handler,
+           const DofMap                &dof_map,
            const Mapping<dim>          &mapping,
            const parameters::Materials &materials,
            const bool                   only_moved_cells,
@@ -155,23 +173,46 @@ namespace ndda
     }
 
     /**
+     * The gradients d phi_i / dX of the (vector) shape functions of cell
+     * @p cell at its quadrature points, on the geometry of the
+     * computation: entry q * dofs_per_cell + i for shape function i at
+     * point q.
+     */
+    const Tensor<2, dim> *
+    gradients_of(const unsigned int cell) const
+    {
+      return gradients.data() + std::size_t(cell) * n_q_points * dofs_per_cell;
+    }
+
+    /** Thickness times JxW at the quadrature points of cell @p cell. */
+    const double *
+    weights_of(const unsigned int cell) const
+    {
+      return weights.data() + std::size_t(cell) * n_q_points;
+    }
+
+    /**
      * The deformation gradient F = dx/dX of cell @p cell from the geometry
-     * its data were computed on to the present one, @p vertices (the
-     * triangulation's vertices): the cell's motion is affine (straight
+     * its data were computed on to the present one: @p vertices are the
+     * triangulation's vertices, @p cell_vertices the indices of the cell's
+     * (DofMap::vertices_of_cell()). The cell's motion is affine (straight
      * sides), so F is its present edge matrix times
-     * CellData::reference_inverse.
+     * CellGeometry::reference_inverse.
      */
     Tensor<2, dim>
     deformation_gradient(const unsigned int             cell,
+                         const unsigned int            *cell_vertices,
                          const std::vector<Point<dim>> &vertices) const
     {
-      const CellData &d = data[cell];
-      Tensor<2, dim>  edges;
-      for (unsigned int k = 0; k < dim; ++k)
-        for (unsigned int j = 0; j < dim; ++j)
-          edges[k][j] = vertices[d.vertex_indices[j + 1]][k] -
-                        vertices[d.vertex_indices[0]][k];
-      return edges * d.reference_inverse;
+      const Point<dim> &x0 = vertices[cell_vertices[0]];
+      Tensor<2, dim>    edges;
+      for (unsigned int j = 0; j < dim; ++j)
+        {
+          const Point<dim> &x = vertices[cell_vertices[j + 1]];
+          for (unsigned int k = 0; k < dim; ++k)
+            edges[k][j] = x[k] - x0[k];
+        }
+      return edges * geometry[cell].reference_inverse;
     }
 
     /** The constitutive law of the last update(). */
@@ -218,16 +259,29 @@ namespace ndda
   private:
     /**
      * The cells update() computes: all, or with @p only_moved_cells those
-     * that moved beyond @p tolerance; into computed_cells too. Refreshes
-     * every cell's vertex indices.
+     * that moved beyond @p tolerance; into computed_cells too. The test
+     * reads plain arrays (@p dof_map's cell vertices, the triangulation's
+     * vertices): it runs over every cell in every step.
      */
     std::vector<typename DoFHandler<dim>::active_cell_iterator>
     select_cells(const DoFHandler<dim>     &dof_handler,
+                 const DofMap              &dof_map,
                  const bool                 only_moved_cells,
                  const double               tolerance,
                  const std::vector<double> *frame_angles);
 
-    std::vector<CellData>                  data;
+    /** Size the arrays of the cells' data for @p n_cells cells, none
+     * computed. */
+    void
+    resize(const unsigned int n_cells);
+
+    std::vector<CellData>     data;
+    std::vector<CellGeometry> geometry;
+    /// The cells' shape gradients and weights (gradients_of(),
+    /// weights_of()).
+    std::vector<Tensor<2, dim>>            gradients;
+    std::vector<double>                    weights;
+    unsigned int                           dofs_per_cell = 0;
     std::shared_ptr<const ConstitutiveLaw> law;
     std::vector<SymmetricTensor<4, dim>>   tangents;
     std::vector<unsigned int>              computed_cells;

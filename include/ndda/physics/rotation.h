@@ -68,28 +68,45 @@ namespace ndda
       return r;
     }
 
+    /** A step's strain and the rotation of its polar split (step_strain()). */
+    struct StepStrain
+    {
+      /// V - I, in the step's end frame.
+      SymmetricTensor<2, 2> strain;
+      /// cos(angle) - 1 and sin(angle) of R.
+      double cos_minus_one = 0, sin = 0;
+    };
+
     /**
      * The strain of the step whose displacement gradient on the step's
      * start geometry is @p G, and its rotation: F = I + G = V R, returned
-     * as (V - I, angle of R). V - I is the strain in the step's end frame
-     * (the left stretch less the identity); a rigid motion of any size has
-     * V = I, so it strains nothing.
+     * as V - I and R's cosine less one and sine. V - I is the strain in the
+     * step's end frame (the left stretch less the identity); a rigid
+     * motion of any size has V = I, so it strains nothing.
+     *
+     * R's angle has tan = b / a, a = F00 + F11, b = F10 - F01
+     * (polar_angle()); its cosine and sine are a / r and b / r,
+     * r = sqrt(a^2 + b^2), computed without a trigonometric function (this
+     * runs at every quadrature point in every step), and
+     * cos - 1 = (a - r) / r = -b^2 / (r (r + a)) without cancellation for
+     * the small turns of a step (a > 0).
      */
-    inline std::pair<SymmetricTensor<2, 2>, double>
+    inline StepStrain
     step_strain(const Tensor<2, 2> &G)
     {
-      Tensor<2, 2> F = G;
-      F[0][0] += 1.;
-      F[1][1] += 1.;
-      const double angle              = polar_angle(F);
-      const auto [cos_minus_one, sin] = cos_minus_one_sin(angle);
+      const double a = 2. + G[0][0] + G[1][1];
+      const double b = G[1][0] - G[0][1];
+      const double r = std::sqrt(a * a + b * b);
+      StepStrain   result;
+      result.sin           = b / r;
+      result.cos_minus_one = a > 0. ? -b * b / (r * (r + a)) : (a - r) / r;
       // V - I = F R^T - I = G R^T + (R^T - I), whose symmetric part is
       // sym(G R^T) + (cos - 1) I: no cancellation for small strains.
-      SymmetricTensor<2, 2> strain =
-        dealii::symmetrize(G * dealii::transpose(matrix(cos_minus_one, sin)));
-      strain[0][0] += cos_minus_one;
-      strain[1][1] += cos_minus_one;
-      return {strain, angle};
+      result.strain = dealii::symmetrize(
+        G * dealii::transpose(matrix(result.cos_minus_one, result.sin)));
+      result.strain[0][0] += result.cos_minus_one;
+      result.strain[1][1] += result.cos_minus_one;
+      return result;
     }
   } // namespace rotation
 } // namespace ndda
