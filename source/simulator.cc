@@ -197,9 +197,18 @@ namespace ndda
   void
   Simulator<dim>::compute_internal_force()
   {
-    // f_int = sum over cells of t * int B^T sigma; the strain energy is
-    // the energy the stresses hold less its initial value.
-    const double energy = stresses.internal_force(internal_force);
+    // f_int = sum over cells of t * int B^T sigma.
+    finish_internal_force(stresses.internal_force(internal_force));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_internal_force(const double energy)
+  {
+    // The strain energy is the energy the stresses hold less its initial
+    // value.
     if (!initial_strain_energy_known)
       {
         initial_strain_energy       = energy;
@@ -426,8 +435,11 @@ namespace ndda
 
     // Objective update on the step's start geometry: each point's stress
     // turns by the increment's rotation there, exactly, and takes the
-    // stress of its stretch.
-    stresses.advance(motion);
+    // stress of its stretch; in the same pass over the cells, the
+    // internal force of the new stresses on the step's end geometry, and
+    // the strain energy they hold.
+    const double energy =
+      stresses.advance_with_internal_force(motion, internal_force);
 
     fem.bolts.update(displacement, motion);
 
@@ -444,9 +456,7 @@ namespace ndda
     mesh.move_vertices(fem.dof_map.vertex_values(motion));
     time += dt;
 
-    // The internal force of the new stresses on the step's end geometry,
-    // and the strain energy they hold.
-    compute_internal_force();
+    finish_internal_force(energy);
   }
 
 

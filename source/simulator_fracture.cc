@@ -117,11 +117,14 @@ namespace ndda
     if (refined)
       {
         const auto &origin = refined->cell_origin;
+        std::vector<std::vector<StressField::Stress>> cell_stresses =
+          stresses.by_cell();
         state_transfer::transfer_refined(
           make_element(parameters.control.finite_element).cell_quadrature,
           fem.fe->degree - 1,
           *refined,
-          stresses.cells());
+          cell_stresses);
+        stresses.set_by_cell(cell_stresses);
         fem.frames.carry_to_cells(origin);
         fem.element_cache.carry_to_cells(*refined);
         std::vector<const kinematics::BlockKinematics *> model;

@@ -201,7 +201,7 @@ namespace ndda
     }
 
     /** Stress at every quadrature point of the active cell @p cell. */
-    const std::vector<SymmetricTensor<2, dim>> &
+    ArrayView<const SymmetricTensor<2, dim>>
     get_cell_stress(const unsigned int cell) const
     {
       return stresses[cell];
@@ -504,6 +504,15 @@ namespace ndda
     /** Internal force and strain energy of the present stresses. */
     void
     compute_internal_force();
+
+    /**
+     * The rest of compute_internal_force() once the stresses' internal
+     * force is in internal_force and @p energy is the energy they hold:
+     * the strain energy, and the bolts' forces.
+     */
+    void
+    finish_internal_force(const double energy);
+
     /**
      * Everything a step needs before its first attempt: on the first step
      * the initial acceleration, measure points and external force; on

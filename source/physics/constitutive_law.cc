@@ -43,10 +43,10 @@ namespace ndda
 
   double
   ConstitutiveLaw::energy_density(const parameters::Material &,
-                                  const SymmetricTensor<4, 2> &tangent,
+                                  const SymmetricTensor<4, 2> &compliance,
                                   const SymmetricTensor<2, 2> &stress) const
   {
-    return 0.5 * (stress * (invert(tangent) * stress));
+    return 0.5 * (stress * (compliance * stress));
   }
 
 

@@ -342,14 +342,14 @@ namespace ndda
   template <int dim>
   unsigned int
   ElementCache<dim>::update(
-    const DoFHandler<dim>                                   &dof_handler,
-    const DofMap                                            &dof_map,
-    const Mapping<dim>                                      &mapping,
-    const parameters::Materials                             &materials,
-    const bool                                               only_moved_cells,
-    const double                                             tolerance,
-    const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses,
-    const std::vector<double>                               *frame_angles)
+    const DoFHandler<dim>                      &dof_handler,
+    const DofMap                               &dof_map,
+    const Mapping<dim>                         &mapping,
+    const parameters::Materials                &materials,
+    const bool                                  only_moved_cells,
+    const double                                tolerance,
+    const std::vector<SymmetricTensor<2, dim>> *stresses,
+    const std::vector<double>                  *frame_angles)
   {
     const auto &fe = dof_handler.get_fe();
     AssertThrow(quadrature.size() > 0 && mass_quadrature.size() > 0,
@@ -383,6 +383,9 @@ namespace ndda
     for (const auto &material : materials.materials)
       tangents.push_back(law->tangent(material, materials.plane_strain));
     std::vector<SymmetricTensor<4, dim>> C(n_q_points);
+    // Before the initial state is set the stresses are not sized yet.
+    const bool stresses_known =
+      point_tangents && stresses->size() == std::size_t(n_cells) * n_q_points;
     const auto [partner, component] = node_pairs(fe);
 
     FEValues<dim> fe_values(mapping,
@@ -405,11 +408,12 @@ namespace ndda
         mass_values.reinit(cell);
         const auto &material = materials.materials[cell->material_id()];
         for (unsigned int q = 0; q < n_q_points; ++q)
-          C[q] = point_tangents && !(*stresses)[c].empty() ?
-                   law->point_tangent(material,
-                                      materials.plane_strain,
-                                      (*stresses)[c][q]) :
-                   tangents[cell->material_id()];
+          C[q] =
+            stresses_known ?
+              law->point_tangent(material,
+                                 materials.plane_strain,
+                                 (*stresses)[std::size_t(c) * n_q_points + q]) :
+              tangents[cell->material_id()];
 
         d.viscosity_over_density =
           material.density > 0 ? material.viscosity / material.density : 0.;

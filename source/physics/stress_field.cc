@@ -5,24 +5,6 @@
 
 namespace ndda
 {
-  namespace
-  {
-    /**
-     * Each cell's stresses are a heap block of their own, wherever the
-     * allocator put it: a loop over all cells would wait for one cache
-     * miss per cell. It asks for the block of the cell this many cells
-     * ahead of the one it works on.
-     */
-    constexpr unsigned int prefetch_distance = 8;
-
-    void
-    prefetch(const std::vector<std::vector<StressField::Stress>> &stress,
-             const unsigned int                                   cell)
-    {
-      if (cell < stress.size())
-        __builtin_prefetch(stress[cell].data());
-    }
-  } // namespace
 
 
 
@@ -45,7 +27,38 @@ namespace ndda
   void
   StressField::reinit(const unsigned int n_cells, const unsigned int n_points)
   {
-    stress.assign(n_cells, std::vector<Stress>(n_points));
+    n_active_cells = n_cells;
+    this->n_points = n_points;
+    stress.assign(std::size_t(n_cells) * n_points, Stress());
+  }
+
+
+
+  std::vector<std::vector<StressField::Stress>>
+  StressField::by_cell() const
+  {
+    std::vector<std::vector<Stress>> cells(n_active_cells);
+    for (unsigned int c = 0; c < n_active_cells; ++c)
+      cells[c].assign((*this)[c].begin(), (*this)[c].end());
+    return cells;
+  }
+
+
+
+  void
+  StressField::set_by_cell(const std::vector<std::vector<Stress>> &cells)
+  {
+    reinit(cells.size(), cells.empty() ? 0 : cells[0].size());
+    for (unsigned int c = 0; c < n_active_cells; ++c)
+      {
+        AssertThrow(cells[c].size() == n_points,
+                    ExcMessage("StressField::set_by_cell(): cell " +
+                               std::to_string(c) + " has " +
+                               std::to_string(cells[c].size()) +
+                               " stresses, cell 0 has " +
+                               std::to_string(n_points) + "."));
+        std::copy(cells[c].begin(), cells[c].end(), (*this)[c].begin());
+      }
   }
 
 
@@ -102,26 +115,23 @@ namespace ndda
 
 
   void
-  StressField::advance(const unsigned int    c,
-                       const Vector<double> &d,
-                       std::vector<Stress>  &sigma) const
+  StressField::advance_cell(const unsigned int    c,
+                            const Vector<double> &d,
+                            const Tensor<2, 2>   &F_inverse,
+                            Stress               *sigma) const
   {
     // The element data hold shape gradients on the geometry X they were
     // computed on; F maps it to the step's start geometry x, so the
     // increment's gradient there is (dd/dX) F^-1. Its polar split turns
     // the stress exactly and strains the cell by its stretch only: rigid
-    // motion of any size leaves the stress as it was, turned. A cell
-    // that does not move keeps its stresses (the law is not asked).
-    if (!moves_in(c, d))
-      return;
+    // motion of any size leaves the stress as it was, turned.
     const unsigned int  n_dofs    = dof_map->dofs_per_cell;
     const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
     const auto         *dofs      = dof_map->dofs_of_cell(c);
     const unsigned int  material  = (*cell_material)[c];
     const auto         &law       = element_cache->get_constitutive_law();
     const auto         &C         = element_cache->get_tangents()[material];
-    const Tensor<2, 2>  F_inverse = invert(deformation_gradient(c));
-    for (unsigned int q = 0; q < sigma.size(); ++q)
+    for (unsigned int q = 0; q < n_points; ++q)
       {
         Tensor<2, 2> gradient;
         for (unsigned int i = 0; i < n_dofs; ++i)
@@ -141,20 +151,31 @@ namespace ndda
 
 
   void
+  StressField::advance(const unsigned int    c,
+                       const Vector<double> &d,
+                       ArrayView<Stress>     sigma) const
+  {
+    // A cell that does not move keeps its stresses (the law is not
+    // asked).
+    AssertDimension(sigma.size(), n_points);
+    if (moves_in(c, d))
+      advance_cell(c, d, invert(deformation_gradient(c)), sigma.data());
+  }
+
+
+
+  void
   StressField::advance(const Vector<double> &d)
   {
-    for (unsigned int c = 0; c < stress.size(); ++c)
-      {
-        prefetch(stress, c + prefetch_distance);
-        advance(c, d, stress[c]);
-      }
+    for (unsigned int c = 0; c < n_active_cells; ++c)
+      advance(c, d, (*this)[c]);
   }
 
 
 
   StressField::Stress
-  StressField::mean(const unsigned int         cell,
-                    const std::vector<Stress> &sigma) const
+  StressField::mean(const unsigned int             cell,
+                    const ArrayView<const Stress> &sigma) const
   {
     const double *weights = element_cache->weights_of(cell);
     Stress        mean;
@@ -172,8 +193,8 @@ namespace ndda
   std::vector<StressField::Stress>
   StressField::cell_means() const
   {
-    std::vector<Stress> means(stress.size());
-    for (unsigned int c = 0; c < stress.size(); ++c)
+    std::vector<Stress> means(n_active_cells);
+    for (unsigned int c = 0; c < n_active_cells; ++c)
       means[c] = mean(c);
     return means;
   }
@@ -183,13 +204,13 @@ namespace ndda
   std::vector<StressField::Stress>
   StressField::trial_cell_means(const Vector<double> &d) const
   {
-    std::vector<Stress> means(stress.size());
-    std::vector<Stress> sigma;
-    for (unsigned int c = 0; c < stress.size(); ++c)
+    std::vector<Stress> means(n_active_cells);
+    std::vector<Stress> sigma(n_points);
+    for (unsigned int c = 0; c < n_active_cells; ++c)
       {
-        sigma = stress[c];
-        advance(c, d, sigma);
-        means[c] = mean(c, sigma);
+        std::copy((*this)[c].begin(), (*this)[c].end(), sigma.begin());
+        advance(c, d, make_array_view(sigma));
+        means[c] = mean(c, make_array_view(std::as_const(sigma)));
       }
     return means;
   }
@@ -199,8 +220,8 @@ namespace ndda
   std::vector<double>
   StressField::cell_areas() const
   {
-    std::vector<double> area(stress.size());
-    for (unsigned int c = 0; c < stress.size(); ++c)
+    std::vector<double> area(n_active_cells);
+    for (unsigned int c = 0; c < n_active_cells; ++c)
       {
         const double *weights = element_cache->weights_of(c);
         for (unsigned int q = 0; q < element_cache->n_quadrature_points(); ++q)
@@ -212,46 +233,107 @@ namespace ndda
 
 
 
+  std::vector<SymmetricTensor<4, 2>>
+  StressField::compliances() const
+  {
+    std::vector<SymmetricTensor<4, 2>> compliance;
+    for (const auto &C : element_cache->get_tangents())
+      compliance.push_back(invert(C));
+    return compliance;
+  }
+
+
+
+  double
+  StressField::add_cell_force(const unsigned int           c,
+                              const Tensor<2, 2>          &F,
+                              const Stress                *sigma,
+                              const SymmetricTensor<4, 2> &compliance,
+                              Vector<double>              &force) const
+  {
+    // With the element data's gradients on X and F = dx/dX,
+    // int_x (dphi/dx) : sigma = int_X dphi/dX : P, P = det(F) sigma F^-T
+    // (the first Piola-Kirchhoff stress), exact however far the cell has
+    // turned or moved since its data were computed.
+    const unsigned int  n_dofs    = dof_map->dofs_per_cell;
+    const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
+    const double       *weights   = element_cache->weights_of(c);
+    const auto         *dofs      = dof_map->dofs_of_cell(c);
+    const auto         &law       = element_cache->get_constitutive_law();
+    const auto         &material  = materials->materials[(*cell_material)[c]];
+    const double        J         = determinant(F);
+    const Tensor<2, 2>  F_inverse_transpose = transpose(invert(F));
+    double              energy              = 0;
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        const Tensor<2, 2> P =
+          (J * weights[q]) * (Tensor<2, 2>(sigma[q]) * F_inverse_transpose);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          force[dofs[i]] += scalar_product(gradients[q * n_dofs + i], P);
+        energy +=
+          law.energy_density(material, compliance, sigma[q]) * J * weights[q];
+      }
+    return energy;
+  }
+
+
+
   double
   StressField::internal_force(Vector<double> &force) const
   {
     // Computed from the stresses every step (not updated by K d), so that
-    // it is self-equilibrated in every cell, on the present geometry x:
-    // with the element data's gradients on X and F = dx/dX,
-    // int_x (dphi/dx) : sigma = int_X dphi/dX : P, P = det(F) sigma F^-T
-    // (the first Piola-Kirchhoff stress), exact however far the cell has
-    // turned or moved since its data were computed.
+    // it is self-equilibrated in every cell, on the present geometry.
     //
     // The energy is the state function sum t int w(sigma) (w the law's
     // energy density); unlike the accumulated work d . f_int, it does not
     // drift when stresses turn.
-    force                     = 0;
-    const unsigned int n_dofs = dof_map->dofs_per_cell;
-    const unsigned int n_q    = element_cache->n_quadrature_points();
-    const auto        &law    = element_cache->get_constitutive_law();
-    double             energy = 0;
-    for (unsigned int c = 0; c < dof_map->n_cells(); ++c)
+    force                                               = 0;
+    const std::vector<SymmetricTensor<4, 2>> compliance = compliances();
+    double                                   energy     = 0;
+    for (unsigned int c = 0; c < n_active_cells; ++c)
+      energy += add_cell_force(c,
+                               deformation_gradient(c),
+                               (*this)[c].data(),
+                               compliance[(*cell_material)[c]],
+                               force);
+    return energy;
+  }
+
+
+
+  double
+  StressField::advance_with_internal_force(const Vector<double> &d,
+                                           Vector<double>       &force)
+  {
+    // One pass: each cell's start geometry (the present vertices) for
+    // the stress update, its end geometry (the vertices moved by d, in
+    // the arithmetic of CrackableMesh::move_vertices()) for the force.
+    force                                               = 0;
+    const std::vector<SymmetricTensor<4, 2>> compliance = compliances();
+    const auto &vertices   = triangulation->get_vertices();
+    const auto &vertex_dof = dof_map->vertex_dofs;
+    double      energy     = 0;
+    for (unsigned int c = 0; c < n_active_cells; ++c)
       {
-        prefetch(stress, c + prefetch_distance);
-        const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
-        const double       *weights   = element_cache->weights_of(c);
-        const auto         *dofs      = dof_map->dofs_of_cell(c);
-        const unsigned int  material  = (*cell_material)[c];
-        const auto         &C         = element_cache->get_tangents()[material];
-        const Tensor<2, 2>  F         = deformation_gradient(c);
-        const double        J         = determinant(F);
-        const Tensor<2, 2>  F_inverse_transpose = transpose(invert(F));
-        for (unsigned int q = 0; q < n_q; ++q)
+        const unsigned int *cell_vertices = dof_map->vertices_of_cell(c);
+        Stress             *sigma         = (*this)[c].data();
+        Tensor<2, 2>        F_end;
+        if (moves_in(c, d))
           {
-            const auto        &sigma = stress[c][q];
-            const Tensor<2, 2> P =
-              (J * weights[q]) * (Tensor<2, 2>(sigma) * F_inverse_transpose);
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              force[dofs[i]] += scalar_product(gradients[q * n_dofs + i], P);
-            energy +=
-              law.energy_density(materials->materials[material], C, sigma) * J *
-              weights[q];
+            advance_cell(c, d, invert(deformation_gradient(c)), sigma);
+            std::array<Point<2>, 3> x;
+            for (unsigned int v = 0; v < 3; ++v)
+              {
+                const auto &dofs = vertex_dof[cell_vertices[v]];
+                x[v]             = vertices[cell_vertices[v]];
+                x[v] += Tensor<1, 2>({d[dofs[0]], d[dofs[1]]});
+              }
+            F_end = element_cache->deformation_gradient(c, x);
           }
+        else
+          F_end = deformation_gradient(c);
+        energy += add_cell_force(
+          c, F_end, sigma, compliance[(*cell_material)[c]], force);
       }
     return energy;
   }

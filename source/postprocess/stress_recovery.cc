@@ -390,7 +390,7 @@ namespace ndda
               simulator.get_mapping(),
               cache.get_quadrature(),
               cache.get_mass_quadrature(),
-              simulator.get_stresses().cells());
+              simulator.get_stresses().by_cell());
     }
 
 

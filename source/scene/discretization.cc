@@ -259,7 +259,7 @@ namespace ndda
                                parameters.materials,
                                tolerance > 0.,
                                tolerance,
-                               &stresses.cells(),
+                               &stresses.values(),
                                &frames.cell_angles()) == 0 &&
           !always_assemble)
         return false;

@@ -106,12 +106,13 @@ namespace ndda
     /**
      * The elastic energy per unit volume that @p stress stores (J/m^3),
      * for the strain energy of the statistics and the energy balance.
-     * The default is that of a linear law with @p tangent:
-     * stress : tangent^-1 : stress / 2.
+     * @p compliance is the inverse of tangent() of @p material (computed
+     * once per material, not at every point). The default is that of a
+     * linear law: stress : compliance : stress / 2.
      */
     virtual double
     energy_density(const parameters::Material  &material,
-                   const SymmetricTensor<4, 2> &tangent,
+                   const SymmetricTensor<4, 2> &compliance,
                    const SymmetricTensor<2, 2> &stress) const;
 
     static const char *

@@ -147,19 +147,19 @@ namespace ndda
      * that a cell that only turned with its block's frame has not moved.
      * Returns the number of cells computed. If the constitutive law's
      * tangent depends on the stress and @p stresses (the stresses at every
-     * quadrature point, cell by cell) are given, the stiffness uses the
-     * law's tangent at each point and every cell is computed.
+     * quadrature point: n_quadrature_points() of cell 0, then of cell 1,
+     * and so on) are given, the stiffness uses the law's tangent at each
+     * point and every cell is computed.
      */
     unsigned int
-    update(const DoFHandler<dim>       &dof_handler,
-           const DofMap                &dof_map,
-           const Mapping<dim>          &mapping,
-           const parameters::Materials &materials,
-           const bool                   only_moved_cells,
-           const double                 tolerance,
-           const std::vector<std::vector<SymmetricTensor<2, dim>>> *stresses =
-             nullptr,
-           const std::vector<double> *frame_angles = nullptr);
+    update(const DoFHandler<dim>                      &dof_handler,
+           const DofMap                               &dof_map,
+           const Mapping<dim>                         &mapping,
+           const parameters::Materials                &materials,
+           const bool                                  only_moved_cells,
+           const double                                tolerance,
+           const std::vector<SymmetricTensor<2, dim>> *stresses     = nullptr,
+           const std::vector<double>                  *frame_angles = nullptr);
 
     /** Whether the constitutive law of @p materials has a tangent that
      * depends on the stress. */
@@ -204,14 +204,22 @@ namespace ndda
                          const unsigned int            *cell_vertices,
                          const std::vector<Point<dim>> &vertices) const
     {
-      const Point<dim> &x0 = vertices[cell_vertices[0]];
-      Tensor<2, dim>    edges;
+      std::array<Point<dim>, dim + 1> x;
+      for (unsigned int v = 0; v <= dim; ++v)
+        x[v] = vertices[cell_vertices[v]];
+      return deformation_gradient(cell, x);
+    }
+
+    /** The deformation gradient of cell @p cell whose vertices are at
+     * @p x (in the order of DofMap::vertices_of_cell()). */
+    Tensor<2, dim>
+    deformation_gradient(const unsigned int                     cell,
+                         const std::array<Point<dim>, dim + 1> &x) const
+    {
+      Tensor<2, dim> edges;
       for (unsigned int j = 0; j < dim; ++j)
-        {
-          const Point<dim> &x = vertices[cell_vertices[j + 1]];
-          for (unsigned int k = 0; k < dim; ++k)
-            edges[k][j] = x[k] - x0[k];
-        }
+        for (unsigned int k = 0; k < dim; ++k)
+          edges[k][j] = x[j + 1][k] - x[0][k];
       return edges * geometry[cell].reference_inverse;
     }
 

@@ -2,6 +2,7 @@
 #ifndef ndda_physics_stress_field_h
 #define ndda_physics_stress_field_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <deal.II/lac/sparse_matrix.h>
@@ -54,33 +55,49 @@ namespace ndda
     unsigned int
     n_cells() const
     {
-      return stress.size();
+      return n_active_cells;
     }
 
-    std::vector<Stress> &
+    /** The number of stresses of each cell (the cell quadrature's points). */
+    unsigned int
+    points_per_cell() const
+    {
+      return n_points;
+    }
+
+    /** The stresses of cell @p cell, one per point. */
+    ArrayView<Stress>
     operator[](const unsigned int cell)
     {
-      return stress[cell];
+      return {stress.data() + std::size_t(cell) * n_points, n_points};
     }
 
-    const std::vector<Stress> &
+    ArrayView<const Stress>
     operator[](const unsigned int cell) const
     {
-      return stress[cell];
+      return {stress.data() + std::size_t(cell) * n_points, n_points};
     }
 
-    /** The whole field, cell by cell (for the state transfer of a crack). */
-    std::vector<std::vector<Stress>> &
-    cells()
+    /**
+     * The stresses of all cells in one array: points_per_cell() of
+     * cell 0, then of cell 1, and so on. The loops of every step stream
+     * through it.
+     */
+    const std::vector<Stress> &
+    values() const
     {
       return stress;
     }
 
-    const std::vector<std::vector<Stress>> &
-    cells() const
-    {
-      return stress;
-    }
+    /** The stresses cell by cell (for the state transfer of a crack and
+     * the nodal recovery). */
+    std::vector<std::vector<Stress>>
+    by_cell() const;
+
+    /** Set the stresses cell by cell: as many cells as given, each with
+     * the same number of points. */
+    void
+    set_by_cell(const std::vector<std::vector<Stress>> &cells);
 
     /**
      * The stresses @p sigma of cell @p cell at the end of a step with
@@ -93,22 +110,33 @@ namespace ndda
     void
     advance(const unsigned int    cell,
             const Vector<double> &d,
-            std::vector<Stress>  &sigma) const;
+            ArrayView<Stress>     sigma) const;
 
     /** advance() every cell's stresses. */
     void
     advance(const Vector<double> &d);
 
+    /**
+     * advance() every cell's stresses by the increment @p d and set
+     * @p force to their internal force on the step's end geometry (the
+     * present vertices moved by @p d's values at them), in one pass over
+     * the cells; return the elastic energy they hold. The same as
+     * advance(), moving the vertices, then internal_force(), to the last
+     * bit.
+     */
+    double
+    advance_with_internal_force(const Vector<double> &d, Vector<double> &force);
+
     /** Area-weighted mean of the stresses @p sigma at the points of
      * @p cell. */
     Stress
-    mean(const unsigned int cell, const std::vector<Stress> &sigma) const;
+    mean(const unsigned int cell, const ArrayView<const Stress> &sigma) const;
 
     /** Area-weighted mean stress of cell @p cell. */
     Stress
     mean(const unsigned int cell) const
     {
-      return mean(cell, stress[cell]);
+      return mean(cell, (*this)[cell]);
     }
 
     /** Area-weighted mean stress of every cell. */
@@ -148,7 +176,7 @@ namespace ndda
     void
     serialize(Archive &ar)
     {
-      ar &stress;
+      ar &stress &n_active_cells &n_points;
     }
 
   private:
@@ -161,13 +189,40 @@ namespace ndda
     Tensor<2, 2>
     deformation_gradient(const unsigned int cell) const;
 
+    /** The stresses @p sigma of cell @p c advanced by @p d (advance()),
+     * @p F_inverse the inverse of its deformation_gradient(). */
+    void
+    advance_cell(const unsigned int    c,
+                 const Vector<double> &d,
+                 const Tensor<2, 2>   &F_inverse,
+                 Stress               *sigma) const;
+
+    /**
+     * Add the internal force of the stresses @p sigma of cell @p c, whose
+     * deformation gradient is @p F, to @p force; return their energy,
+     * @p compliance the inverse of the tangent of its material.
+     */
+    double
+    add_cell_force(const unsigned int           c,
+                   const Tensor<2, 2>          &F,
+                   const Stress                *sigma,
+                   const SymmetricTensor<4, 2> &compliance,
+                   Vector<double>              &force) const;
+
+    /** The inverse of the tangent of every material (for the energy). */
+    std::vector<SymmetricTensor<4, 2>>
+    compliances() const;
+
     const ElementCache<2>           *element_cache = nullptr;
     const DofMap                    *dof_map       = nullptr;
     const parameters::Materials     *materials     = nullptr;
     const std::vector<unsigned int> *cell_material = nullptr;
     const Triangulation<2>          *triangulation = nullptr;
 
-    std::vector<std::vector<Stress>> stress;
+    /// The stresses of all cells, n_points per cell (values()).
+    std::vector<Stress> stress;
+    unsigned int        n_active_cells = 0;
+    unsigned int        n_points       = 0;
   };
 
 } // namespace ndda
