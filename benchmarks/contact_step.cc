@@ -5,7 +5,8 @@
 // blocks, four corners at every joint crossing), each as given ("coarse":
 // 4 and 2 triangles per block) and with the blocks meshed finer ("fine":
 // mesh size 0.25 m for the bricks, 0.125 m for the grid blocks; a fifth of
-// the steps), each with `Linear solver = UMFPACK` and `KLU`, and the
+// the steps), each with `Linear solver = UMFPACK`, `KLU` and `direct`
+// (CHOLMOD where the system is symmetric positive definite), and the
 // coarse scenes once more with KLU and `Reused factorization iterations =
 // 0` (every changed system factorized, as before GMRES reuse). For each run
 // the program prints blocks, cells, DoFs, the mean wall time per step over
@@ -163,10 +164,12 @@ main(int argc, char **argv)
         set_after(text, fine_entry, "Mesh size", fine_size);
       run(scene + ", coarse, UMFPACK", solver(text, "UMFPACK"), steps);
       run(scene + ", coarse, KLU", solver(text, "KLU"), steps);
+      run(scene + ", coarse, direct", solver(text, "direct"), steps);
       run(scene + ", coarse, KLU, no reuse",
           no_reuse(solver(text, "KLU")),
           steps);
       run(scene + ", fine, UMFPACK", solver(fine, "UMFPACK"), steps / 5);
       run(scene + ", fine, KLU", solver(fine, "KLU"), steps / 5);
+      run(scene + ", fine, direct", solver(fine, "direct"), steps / 5);
     }
 }

@@ -61,6 +61,20 @@ main(int argc, char **argv)
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      // Every process would run the whole scene and write the same output
+      // files: refuse until the distributed solver exists (issue 19).
+      const unsigned int n_processes =
+        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      if (n_processes > 1)
+        {
+          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            std::cerr << "\nndda: error: this run has " << n_processes
+                      << " MPI processes, and ndda runs a scene on one: "
+                         "each process would run the whole scene and write "
+                         "the same output files. Run it without mpirun (or "
+                         "with mpirun -np 1).\n";
+          return 1;
+        }
 
       const std::vector<std::string> args(argv + 1, argv + argc);
       if (args.empty() || args[0] == "--help" || args[0] == "-h")

@@ -14,7 +14,11 @@
 //     Cholesky factorization refuses), with Cholesky's flop ratio on the
 //     SPD matrix, UMFPACK's on the others;
 //  5. GMRES with an earlier Cholesky factorization on a symmetric change
-//     of rank 3 converges to 1e-12.
+//     of rank 3 converges to 1e-12;
+//  6. SuiteSparse's allocator as set_up_suitesparse() leaves it: a block of
+//     the huge-page threshold starts on a 2 MB boundary, calloc'ed ones
+//     are zero, and growing, shrinking and moving blocks between malloc()
+//     and huge-page mappings keeps their contents; OpenMP runs one thread.
 
 #include <deal.II/base/mpi.h>
 
@@ -23,9 +27,13 @@
 
 #include <ndda/physics/cholesky.h>
 #include <ndda/physics/linear_solver.h>
+#include <ndda/physics/suitesparse_setup.h>
 
 #include <cmath>
+#include <cstdint>
 #include <iostream>
+#include <omp.h>
+#include <suitesparse/SuiteSparse_config.h>
 
 #include "tests.h"
 
@@ -107,6 +115,66 @@ namespace
     x -= y;
     return x.l2_norm() / y.l2_norm();
   }
+
+  /** Fill @p n bytes at @p block with a pattern that depends on @p seed. */
+  void
+  write_pattern(void *block, const std::size_t n, const unsigned int seed)
+  {
+    auto *const bytes = static_cast<unsigned char *>(block);
+    for (std::size_t i = 0; i < n; ++i)
+      bytes[i] = static_cast<unsigned char>((i * 131 + seed) % 251);
+  }
+
+  bool
+  has_pattern(const void *block, const std::size_t n, const unsigned int seed)
+  {
+    const auto *const bytes = static_cast<const unsigned char *>(block);
+    for (std::size_t i = 0; i < n; ++i)
+      if (bytes[i] != static_cast<unsigned char>((i * 131 + seed) % 251))
+        return false;
+    return true;
+  }
+
+  void
+  check_allocator()
+  {
+    set_up_suitesparse();
+    check(omp_get_max_active_levels() == 0, "OpenMP regions run on one thread");
+    const std::size_t huge  = huge_page_threshold();
+    const std::size_t small = 1000;
+    int               ok    = 0;
+
+    void *block = SuiteSparse_malloc(huge, 1);
+    check(block != nullptr &&
+            reinterpret_cast<std::uintptr_t>(block) % (2u << 20) == 0,
+          "a huge block starts on a 2 MB boundary");
+    write_pattern(block, huge, 1);
+    // Grow (a new mapping), then shrink in place, then move
+    // below the threshold to malloc().
+    block = SuiteSparse_realloc(3 * huge, huge, 1, block, &ok);
+    check(ok && has_pattern(block, huge, 1), "growing keeps the contents");
+    write_pattern(block, 3 * huge, 2);
+    block = SuiteSparse_realloc(huge + 5, 3 * huge, 1, block, &ok);
+    check(ok && has_pattern(block, huge + 5, 2), "shrinking keeps them");
+    block = SuiteSparse_realloc(small, huge + 5, 1, block, &ok);
+    check(ok && has_pattern(block, small, 2), "moving to malloc() keeps them");
+    // And from malloc() to a mapping.
+    block = SuiteSparse_realloc(2 * huge, small, 1, block, &ok);
+    check(ok && has_pattern(block, small, 2),
+          "moving from malloc() keeps them");
+    SuiteSparse_free(block);
+
+    auto *const zeros =
+      static_cast<double *>(SuiteSparse_calloc(huge / sizeof(double), 8));
+    bool all_zero = zeros != nullptr;
+    for (std::size_t i = 0; all_zero && i < huge / sizeof(double); ++i)
+      all_zero = zeros[i] == 0.;
+    check(all_zero, "a huge calloc'ed block is zero");
+    SuiteSparse_free(zeros);
+    std::cout << "allocator: huge blocks of " << huge / (1 << 20)
+              << " MiB and more aligned, contents kept, zeros zero"
+              << std::endl;
+  }
 } // namespace
 
 int
@@ -186,6 +254,8 @@ main(int argc, char **argv)
             << " iterations, residual " << residual << std::endl;
   check(iterations > 0 && residual < 1e-11,
         "GMRES converges with the earlier Cholesky factorization");
+  // 6.
+  check_allocator();
   std::cout << "OK" << std::endl;
   return 0;
 }

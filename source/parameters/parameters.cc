@@ -313,20 +313,18 @@ namespace ndda
       {
         prm.declare_entry(
           "Linear solver",
-          "UMFPACK",
+          "direct",
           Patterns::Selection("UMFPACK|direct|KLU|CG-AMG"),
-          "UMFPACK: sparse direct LU, multifrontal (serial; best "
-          "for large blocks); direct: sparse Cholesky (CHOLMOD) where "
-          "the system matrix is symmetric positive definite (elasticity, "
-          "inertia, contact springs, constraints), UMFPACK's LU where it "
-          "is not (sliding friction): a third of the flops of the LU, "
-          "back-substitutions 1.3-1.6 times faster, the factorization "
-          "not yet faster (doc/performance.md); KLU: sparse direct, "
-          "SuiteSparse's "
-          "KLU (little overhead per factorization, keeps the "
-          "pivot order between contact iterations; best for "
-          "many small blocks); CG-AMG: Trilinos CG with ML "
-          "AMG.");
+          "direct: sparse Cholesky (CHOLMOD, supernodal) where the system "
+          "matrix is symmetric positive definite (elasticity, inertia, "
+          "contact springs, constraints), UMFPACK's LU where it is not "
+          "(sliding friction): a third of the flops of the LU, "
+          "back-substitutions 1.2-1.6 times faster, less memory "
+          "(doc/performance.md); UMFPACK: sparse direct LU, "
+          "multifrontal, for every system; KLU: sparse direct, "
+          "SuiteSparse's KLU (little overhead per factorization, keeps "
+          "the pivot order between contact iterations; best for many "
+          "small blocks); CG-AMG: Trilinos CG with ML AMG.");
         prm.declare_entry("Solver tolerance",
                           "1e-10",
                           Patterns::Double(0.),

@@ -2,6 +2,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <ndda/physics/cholesky.h>
+#include <ndda/physics/suitesparse_setup.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,6 +43,7 @@ namespace ndda
   {
     Implementation()
     {
+      set_up_suitesparse();
       cholmod_l_start(&common);
       // Not positive definite is an answer here, not an error to print.
       common.print = 0;

@@ -10,6 +10,7 @@
 
 #include <ndda/physics/cholesky.h>
 #include <ndda/physics/linear_solver.h>
+#include <ndda/physics/suitesparse_setup.h>
 
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
@@ -561,7 +562,9 @@ namespace ndda
     : type(type)
     , tolerance(tolerance)
     , implementation(std::make_unique<Implementation>())
-  {}
+  {
+    set_up_suitesparse();
+  }
 
 
 
