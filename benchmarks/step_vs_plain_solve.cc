@@ -26,12 +26,14 @@
  *   are not in the plain total, as ndda's setup() is not in its first
  *   step. A second back-substitution with the same factorization ("plain
  *   re-solve") is the least a plain time-stepping code pays per step.
- * - the same plain system once more, factorized and solved with UMFPACK
- *   called directly with the settings ndda's LinearSolver uses (symmetric
- *   strategy, no iterative refinement; SparseDirectUMFPACK uses UMFPACK's
- *   defaults, whose iterative refinement costs at least one extra
- *   residual per solve). The "matched" columns compare ndda with this, so
- *   that solver settings and ndda's own overhead can be told apart.
+ * - the same plain system once more, factorized and solved by ndda's own
+ *   LinearSolver of the ndda run's solver type, with its settings
+ *   (`direct`, the default: CHOLMOD's Cholesky factorization, since the
+ *   system is symmetric positive definite; UMFPACK: symmetric strategy, no
+ *   iterative refinement, where SparseDirectUMFPACK uses UMFPACK's
+ *   defaults, whose iterative refinement costs at least one extra residual
+ *   per solve). The "matched" columns compare ndda with this, so that
+ *   solver settings and ndda's own overhead can be told apart.
  *
  * The comparison is only fair if both solve the same system. With zero
  * initial velocity, no initial stress and constant loads f, ndda's first
