@@ -20,12 +20,17 @@
 //    the four tips are not.
 //  - repeated: splitting again along edges that are crack faces already
 //    keeps them in crack_edges and adds nothing.
+//  - the crossing again with the cells in reverse order: the same corners
+//    for every cell (the split does not follow the cells' numbering); and
+//    ndda::hilbert_order() on a grid of squares steps from neighbour to
+//    neighbour.
 // For every case: the area and the orientation of every triangle are kept,
 // new vertices are copies of the vertex they come from, crack_edges holds
 // both faces of every split edge, and a bad edge is refused.
 
 #include <deal.II/base/exceptions.h>
 
+#include <ndda/base/utilities.h>
 #include <ndda/geometry/block_mesh.h>
 
 #include <algorithm>
@@ -258,6 +263,58 @@ main()
       again.push_back(e);
     run("repeated", across, again, 0, 2, 8);
     run("repeated_empty", across, {}, 0, 2, 8);
+  }
+
+  // The split does not depend on the order of the cells: the crossing
+  // split again with the cells in reverse order gives every cell the same
+  // corners (which fan keeps a vertex, and the numbers of the new ones, go
+  // by an order of the plane). A contact's memory is kept by vertex
+  // number, so the side of a crack that keeps a number must not follow the
+  // mesh's numbering.
+  {
+    const std::vector<std::array<unsigned int, 2>> crossing = {
+      {{v(1, 2), v(2, 2)}},
+      {{v(2, 2), v(3, 2)}},
+      {{v(2, 1), v(2, 2)}},
+      {{v(2, 2), v(2, 3)}}};
+    BlockMesh forward = grid(4, 4), reverse = grid(4, 4);
+    std::reverse(reverse.triangles.begin(), reverse.triangles.end());
+    split_vertices_along_edges(forward, crossing);
+    split_vertices_along_edges(reverse, crossing);
+    const unsigned int n      = forward.triangles.size();
+    unsigned int       n_same = 0;
+    for (unsigned int c = 0; c < n; ++c)
+      n_same += forward.triangles[c] == reverse.triangles[n - 1 - c];
+    std::cout << "cells in reverse order: " << n_same << " of " << n
+              << " cells with the same corners" << std::endl;
+    ndda_tests::record("geometry_split.reverse_order_same_cells", n_same);
+    check(n_same == n && forward.vertices.size() == reverse.vertices.size(),
+          "the split does not depend on the order of the cells");
+  }
+
+  // ndda::hilbert_order() on the centres of a 16 x 16 grid: every step
+  // along the curve goes to a neighbouring square.
+  {
+    std::vector<dealii::Point<2>> centres;
+    for (unsigned int j = 0; j < 16; ++j)
+      for (unsigned int i = 0; i < 16; ++i)
+        centres.emplace_back(15 - i + 0.5, j + 0.5);
+    const std::vector<unsigned int> order = ndda::hilbert_order(centres);
+    std::vector<unsigned int>       sorted(order);
+    std::sort(sorted.begin(), sorted.end());
+    bool is_permutation = sorted.size() == centres.size();
+    for (unsigned int i = 0; i < sorted.size() && is_permutation; ++i)
+      is_permutation = sorted[i] == i;
+    unsigned int n_unit_steps = 0;
+    for (unsigned int i = 0; i + 1 < order.size() && is_permutation; ++i)
+      n_unit_steps +=
+        std::abs(centres[order[i]].distance(centres[order[i + 1]]) - 1.) <
+        1e-12;
+    std::cout << "Hilbert order of 256 squares: " << n_unit_steps
+              << " of 255 steps to a neighbour" << std::endl;
+    ndda_tests::record("geometry_split.hilbert_unit_steps", n_unit_steps);
+    check(is_permutation && n_unit_steps == 255,
+          "the Hilbert order steps from square to neighbouring square");
   }
 
   // Bad input is refused with a message.

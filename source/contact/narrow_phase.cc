@@ -312,8 +312,16 @@ namespace ndda
               remembered(vertices, list[a]->vertex, list[a]->edge);
             const bool rb =
               remembered(vertices, list[b]->vertex, list[b]->edge);
-            const bool drop_a =
-              (ra != rb) ? rb : list[a]->distance < list[b]->distance;
+            // Of two edges the vertex touches alike (it lies at their
+            // corner, as a split vertex of a crack does on the other
+            // face), the edge that enters the corner stays: a rule of the
+            // boundary's orientation, not of the edges' numbers, which
+            // follow the order of the cells.
+            const double tie = 1e-9 * (t_in.norm() + t_out.norm());
+            const double da = list[a]->distance, db = list[b]->distance;
+            const bool   drop_a     = (ra != rb)              ? rb :
+                                      std::abs(da - db) > tie ? da < db :
+                                                                in != &ea;
             dropped[drop_a ? a : b] = true;
           }
       for (unsigned int a = 0; a < list.size(); ++a)
@@ -513,8 +521,12 @@ namespace ndda
               vertices[edges[e].v1] - vertices[edges[e].v0];
             const double r =
               ((vertices[v] - vertices[edges[e].v0]) * t) / t.norm_square();
-            if (best == invalid || std::min(r, 1. - r) > inside)
-              best = e, inside = std::min(r, 1. - r), ratio = r;
+            // v at w: the two edges alike, the one that enters w stays
+            // (as in touched_edges()).
+            const double in = std::min(r, 1. - r);
+            if (best == invalid || in > inside + 1e-9 ||
+                (in > inside - 1e-9 && edges[e].v1 == w))
+              best = e, inside = in, ratio = r;
           }
       if (best == invalid || ratio < -1e-3 || ratio > 1. + 1e-3)
         return; // v is beyond the faces: no overlap

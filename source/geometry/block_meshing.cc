@@ -20,6 +20,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 
+#include <ndda/base/utilities.h>
 #include <ndda/geometry/block_mesh.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -526,6 +527,21 @@ namespace ndda
             }
           std::sort(cracks.begin(), cracks.end());
           cracks.erase(std::unique(cracks.begin(), cracks.end()), cracks.end());
+          // The cells along a Hilbert curve through their centroids: the
+          // mesher lists them in the order of its refinement, all over the
+          // block, and every loop over the cells (and deal.II's dof
+          // numbering, cell by cell) would miss the cache.
+          std::vector<dealii::Point<2>> centroids;
+          centroids.reserve(mesh.triangles.size());
+          for (const auto &t : mesh.triangles)
+            centroids.emplace_back((mesh.vertices[t[0]] + mesh.vertices[t[1]] +
+                                    mesh.vertices[t[2]]) /
+                                   3.);
+          std::vector<std::array<unsigned int, 3>> ordered;
+          ordered.reserve(mesh.triangles.size());
+          for (const unsigned int c : hilbert_order(centroids))
+            ordered.push_back(mesh.triangles[c]);
+          mesh.triangles.swap(ordered);
           return mesh;
         }
       } // namespace

@@ -271,11 +271,14 @@ namespace ndda
 
 
       /**
-       * Give every fan its vertex and renumber the triangles. Corners are
-       * visited in increasing order, so the fan with the lowest corner keeps
-       * the original vertex and the others get new vertices in the order of
-       * their lowest corner: the result does not depend on anything but the
-       * input. Returns the origin of every vertex.
+       * Give every fan its vertex and renumber the triangles. Of the fans
+       * at a vertex, the one with the first cell in an order of the plane
+       * (its centroid's x, then y) keeps the original vertex, the others
+       * get new vertices in that order, vertex by vertex. What the original
+       * number carries (a contact's memory, a constraint) so stays with the
+       * same side of the crack, whatever the order of the cells: with the
+       * fan of the lowest cell index instead, the side would follow the
+       * mesh's numbering. Returns the origin of every vertex.
        */
       std::vector<unsigned int>
       number_fans(BlockMesh               &mesh,
@@ -286,30 +289,62 @@ namespace ndda
         const unsigned int        n_cells    = mesh.triangles.size();
         std::vector<unsigned int> origin(n_vertices);
         std::iota(origin.begin(), origin.end(), 0u);
-        std::vector<bool>         vertex_taken(n_vertices, false);
-        std::vector<unsigned int> fan_vertex(
-          3 * std::size_t(n_cells), dealii::numbers::invalid_unsigned_int);
+        const auto centroid = [&](const unsigned int c) {
+          const auto &t = mesh.triangles[c];
+          return Point<2>(
+            (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) /
+            3.);
+        };
+        const auto before = [](const Point<2> &a, const Point<2> &b) {
+          return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+        };
+        // Every fan's first cell in the plane's order, and the fans at
+        // every split vertex.
+        std::vector<Point<2>> fan_first(3 * std::size_t(n_cells));
+        std::vector<bool>     fan_seen(3 * std::size_t(n_cells), false);
+        std::vector<std::vector<unsigned int>> fans_at(n_vertices);
         for (unsigned int corner = 0; corner < 3 * n_cells; ++corner)
           {
             const unsigned int v = mesh.triangles[corner / 3][corner % 3];
             if (!on_split_edge[v])
               continue;
             const unsigned int root = fans.find(corner);
-            if (fan_vertex[root] == dealii::numbers::invalid_unsigned_int)
+            const Point<2>     p    = centroid(corner / 3);
+            if (!fan_seen[root])
               {
-                if (!vertex_taken[v])
-                  {
-                    fan_vertex[root] = v;
-                    vertex_taken[v]  = true;
-                  }
-                else
-                  {
-                    fan_vertex[root] = origin.size();
-                    origin.push_back(v);
-                    mesh.vertices.push_back(mesh.vertices[v]);
-                  }
+                fan_seen[root]  = true;
+                fan_first[root] = p;
+                fans_at[v].push_back(root);
               }
-            mesh.triangles[corner / 3][corner % 3] = fan_vertex[root];
+            else if (before(p, fan_first[root]))
+              fan_first[root] = p;
+          }
+        std::vector<unsigned int> fan_vertex(
+          3 * std::size_t(n_cells), dealii::numbers::invalid_unsigned_int);
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            auto &at = fans_at[v];
+            std::sort(at.begin(),
+                      at.end(),
+                      [&](const unsigned int a, const unsigned int b) {
+                        return before(fan_first[a], fan_first[b]) ||
+                               (!before(fan_first[b], fan_first[a]) && a < b);
+                      });
+            for (unsigned int i = 0; i < at.size(); ++i)
+              if (i == 0)
+                fan_vertex[at[i]] = v;
+              else
+                {
+                  fan_vertex[at[i]] = origin.size();
+                  origin.push_back(v);
+                  mesh.vertices.push_back(mesh.vertices[v]);
+                }
+          }
+        for (unsigned int corner = 0; corner < 3 * n_cells; ++corner)
+          {
+            auto &v = mesh.triangles[corner / 3][corner % 3];
+            if (on_split_edge[v])
+              v = fan_vertex[fans.find(corner)];
           }
         return origin;
       }

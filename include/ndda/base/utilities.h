@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace ndda
 {
@@ -25,6 +26,16 @@ namespace ndda
    */
   double
   point_tolerance(const dealii::Point<2> &lower, const dealii::Point<2> &upper);
+
+  /**
+   * The indices of @p points in the order a Hilbert curve through their
+   * bounding square meets them (on a grid of 2^16 x 2^16; points in the
+   * same grid cell keep their order). Points near each other along the
+   * result lie near each other in the plane: loops over cells numbered so
+   * touch memory in the order of the plane.
+   */
+  std::vector<unsigned int>
+  hilbert_order(const std::vector<dealii::Point<2>> &points);
 } // namespace ndda
 
 #endif
