@@ -77,32 +77,7 @@ namespace ndda
     bool
     update(const SparseMatrix<double> &matrix)
     {
-      const SuiteSparse_long        n = matrix.m();
-      std::vector<SuiteSparse_long> new_p(n + 1, 0), new_i;
-      new_i.reserve(matrix.n_nonzero_elements() / 2 + n);
-      values.clear();
-      std::vector<std::pair<SuiteSparse_long, double>> row;
-      for (SuiteSparse_long r = 0; r < n; ++r)
-        {
-          row.clear();
-          for (auto entry = matrix.begin(r); entry != matrix.end(r); ++entry)
-            if (static_cast<SuiteSparse_long>(entry->column()) >= r)
-              row.emplace_back(entry->column(), entry->value());
-          std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
-            return a.first < b.first;
-          });
-          for (const auto &[c, value] : row)
-            {
-              new_i.push_back(c);
-              values.push_back(value);
-            }
-          new_p[r + 1] = new_i.size();
-        }
-      if (new_p == p && new_i == i)
-        return false;
-      p.swap(new_p);
-      i.swap(new_i);
-      return true;
+      return copy_to_compressed_rows(matrix, true, p, i, values);
     }
 
     /** A CHOLMOD view of the arrays (no copy). */

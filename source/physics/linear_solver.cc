@@ -43,32 +43,7 @@ namespace ndda
       bool
       update(const SparseMatrix<double> &matrix)
       {
-        const SuiteSparse_long        n = matrix.m();
-        std::vector<SuiteSparse_long> new_ap(n + 1, 0), new_ai;
-        new_ai.reserve(matrix.n_nonzero_elements());
-        ax.clear();
-        ax.reserve(matrix.n_nonzero_elements());
-        std::vector<std::pair<SuiteSparse_long, double>> row;
-        for (SuiteSparse_long i = 0; i < n; ++i)
-          {
-            row.clear();
-            for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-              row.emplace_back(entry->column(), entry->value());
-            std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
-              return a.first < b.first;
-            });
-            for (const auto &[j, value] : row)
-              {
-                new_ai.push_back(j);
-                ax.push_back(value);
-              }
-            new_ap[i + 1] = new_ai.size();
-          }
-        if (new_ap == ap && new_ai == ai)
-          return false;
-        ap.swap(new_ap);
-        ai.swap(new_ai);
-        return true;
+        return copy_to_compressed_rows(matrix, false, ap, ai, ax);
       }
 
       SuiteSparse_long

@@ -81,15 +81,20 @@ namespace ndda
       std::mutex                              mutex;
       std::unordered_map<void *, std::size_t> size_of;
 
+      /** Remember @p block as a mapping of @p size bytes. */
+      void
+      set(void *const block, const std::size_t size)
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        size_of[block] = size;
+      }
+
       void *
       add(const std::size_t size)
       {
         void *const block = map_huge_pages(size);
         if (block != nullptr)
-          {
-            std::lock_guard<std::mutex> lock(mutex);
-            size_of[block] = size;
-          }
+          set(block, size);
         return block;
       }
 
@@ -157,8 +162,7 @@ namespace ndda
           if (keep < round_up(old_size, huge_page))
             munmap(static_cast<char *>(old_block) + keep,
                    round_up(old_size, huge_page) - keep);
-          std::lock_guard<std::mutex> lock(huge_blocks().mutex);
-          huge_blocks().size_of[old_block] = size;
+          huge_blocks().set(old_block, size);
           return old_block;
         }
       void *const block = allocate(size);
@@ -166,10 +170,7 @@ namespace ndda
         {
           // realloc() keeps the old block when it fails.
           if (old_size > 0)
-            {
-              std::lock_guard<std::mutex> lock(huge_blocks().mutex);
-              huge_blocks().size_of[old_block] = old_size;
-            }
+            huge_blocks().set(old_block, old_size);
           return nullptr;
         }
       std::memcpy(block,
@@ -203,5 +204,48 @@ namespace ndda
       return true;
     }();
     (void)done;
+  }
+
+
+
+  bool
+  copy_to_compressed_rows(const dealii::SparseMatrix<double> &matrix,
+                          const bool                          upper_only,
+                          std::vector<SuiteSparse_long>      &p,
+                          std::vector<SuiteSparse_long>      &i,
+                          std::vector<double>                &x)
+  {
+    const SuiteSparse_long        n         = matrix.m();
+    const std::size_t             n_entries = upper_only ?
+                                                matrix.n_nonzero_elements() / 2 + n :
+                                                matrix.n_nonzero_elements();
+    std::vector<SuiteSparse_long> new_p(n + 1, 0), new_i;
+    new_i.reserve(n_entries);
+    x.clear();
+    x.reserve(n_entries);
+    std::vector<std::pair<SuiteSparse_long, double>> row;
+    for (SuiteSparse_long r = 0; r < n; ++r)
+      {
+        // deal.II keeps the diagonal first in a row: sort by column.
+        row.clear();
+        for (auto entry = matrix.begin(r); entry != matrix.end(r); ++entry)
+          if (!upper_only ||
+              static_cast<SuiteSparse_long>(entry->column()) >= r)
+            row.emplace_back(entry->column(), entry->value());
+        std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
+          return a.first < b.first;
+        });
+        for (const auto &[column, value] : row)
+          {
+            new_i.push_back(column);
+            x.push_back(value);
+          }
+        new_p[r + 1] = new_i.size();
+      }
+    if (new_p == p && new_i == i)
+      return false;
+    p.swap(new_p);
+    i.swap(new_i);
+    return true;
   }
 } // namespace ndda

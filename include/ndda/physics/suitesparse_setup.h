@@ -2,7 +2,11 @@
 #ifndef ndda_physics_suitesparse_setup_h
 #define ndda_physics_suitesparse_setup_h
 
+#include <deal.II/lac/sparse_matrix.h>
+
 #include <cstddef>
+#include <suitesparse/SuiteSparse_config.h>
+#include <vector>
 
 namespace ndda
 {
@@ -59,6 +63,22 @@ namespace ndda
    */
   void
   set_up_suitesparse();
+
+  /**
+   * Copy @p matrix into compressed rows with sorted column indices, as
+   * SuiteSparse reads them (UMFPACK and KLU: the compressed columns of the
+   * transpose; CHOLMOD with stype -1: the lower triangle by columns): the
+   * row starts @p p, the column indices @p i and the values @p x. With
+   * @p upper_only, only the entries on and above the diagonal. Returns
+   * whether the sparsity pattern differs from the one in @p p and @p i
+   * before the call (then the symbolic analysis must be done again).
+   */
+  bool
+  copy_to_compressed_rows(const dealii::SparseMatrix<double> &matrix,
+                          bool                                upper_only,
+                          std::vector<SuiteSparse_long>      &p,
+                          std::vector<SuiteSparse_long>      &i,
+                          std::vector<double>                &x);
 } // namespace ndda
 
 #endif
