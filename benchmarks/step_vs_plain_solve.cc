@@ -59,6 +59,7 @@
  */
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/table_handler.h>
 
@@ -418,7 +419,11 @@ main(int argc, char **argv)
 {
   try
     {
-      Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      // deal.II's threads: as many as cores, or DEAL_II_NUM_THREADS.
+      Utilities::MPI::MPI_InitFinalize mpi(argc,
+                                           argv,
+                                           numbers::invalid_unsigned_int);
+      std::cout << "threads: " << MultithreadInfo::n_threads() << std::endl;
 
       // Arguments: target DoF counts (default 1e4 and 1e5),
       // '--repeat N' to measure each N times: the figures for

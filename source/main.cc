@@ -31,7 +31,10 @@ namespace
         << "  ndda --help                  this text\n"
         << "\n"
         << "Output goes to output/<scene name>/ unless Output/Directory "
-           "says otherwise.\n";
+           "says otherwise.\n"
+        << "ndda runs on as many threads as the machine has cores; "
+           "DEAL_II_NUM_THREADS=N\n"
+        << "sets their number. The results do not depend on it.\n";
   }
 
   void
@@ -60,7 +63,10 @@ main(int argc, char **argv)
 {
   try
     {
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      // As many threads as the machine has cores, or DEAL_II_NUM_THREADS;
+      // the results do not depend on their number (set_up_threads()).
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(
+        argc, argv, dealii::numbers::invalid_unsigned_int);
       // Every process would run the whole scene and write the same output
       // files: refuse until the distributed solver exists (issue 19).
       const unsigned int n_processes =

@@ -3,6 +3,7 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <ndda/base/stage_reporter.h>
+#include <ndda/base/threads.h>
 #include <ndda/physics/free_bodies.h>
 #include <ndda/scene/scene.h>
 #include <ndda/simulator.h>
@@ -52,6 +53,7 @@ namespace ndda
     , timer()
     , fem(mesh, timer)
   {
+    set_up_threads();
     if (triangulation != nullptr)
       {
         user_triangulation = std::make_unique<Triangulation<dim>>();

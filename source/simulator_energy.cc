@@ -4,6 +4,7 @@
 // kinetic energy, the viscous dissipation of a step, the energy gain and
 // the numerical energy of the statistics.
 
+#include <ndda/base/threads.h>
 #include <ndda/simulator.h>
 
 namespace ndda
@@ -24,9 +25,9 @@ namespace ndda
     const SparseMatrix<double> &damping =
       fem.linear_system.get_damping_matrix();
     const double w = parameters.control.time_integrator->contact_start_weight();
-    viscous_work += (1. - w) * damping.matrix_norm_square(d) / dt;
+    viscous_work += (1. - w) * matrix_norm_square(damping, d) / dt;
     if (w > 0. && last_mean_velocity.size() == d.size())
-      viscous_work += w * damping.matrix_scalar_product(d, last_mean_velocity);
+      viscous_work += w * matrix_scalar_product(damping, d, last_mean_velocity);
     last_mean_velocity = d;
     last_mean_velocity /= dt;
   }
@@ -37,8 +38,8 @@ namespace ndda
   double
   Simulator<dim>::kinetic_energy() const
   {
-    return 0.5 * fem.linear_system.get_mass_matrix().matrix_norm_square(
-                   kinematics.velocity);
+    return 0.5 * matrix_norm_square(fem.linear_system.get_mass_matrix(),
+                                    kinematics.velocity);
   }
 
 

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <deal.II/base/parallel.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <ndda/physics/element_cache.h>
@@ -308,19 +310,33 @@ namespace ndda
   {
     computed_cells.clear();
     const auto &positions = dof_handler.get_triangulation().get_vertices();
-    for (unsigned int c = 0; c < geometry.size(); ++c)
-      {
-        const CellGeometry &g = geometry[c];
-        if (only_moved_cells && g.diameter > 0. &&
-            !moved_beyond(dof_map.vertices_of_cell(c),
-                          positions,
-                          g.vertices,
-                          tolerance * g.diameter,
-                          (frame_angles != nullptr ? (*frame_angles)[c] : 0.) -
-                            g.frame_angle))
-          continue;
+    // The test of every cell on deal.II's threads, each into its own
+    // flag; the list in cell order.
+    const unsigned int n_cells = geometry.size();
+    std::vector<char>  compute(n_cells, 1);
+    if (only_moved_cells)
+      parallel::apply_to_subranges(
+        0u,
+        n_cells,
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int c = begin; c < end; ++c)
+            {
+              const CellGeometry &g = geometry[c];
+              compute[c] =
+                g.diameter == 0. ||
+                moved_beyond(dof_map.vertices_of_cell(c),
+                             positions,
+                             g.vertices,
+                             tolerance * g.diameter,
+                             (frame_angles != nullptr ? (*frame_angles)[c] :
+                                                        0.) -
+                               g.frame_angle);
+            }
+        },
+        2048);
+    for (unsigned int c = 0; c < n_cells; ++c)
+      if (compute[c])
         computed_cells.push_back(c);
-      }
     std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
     cells.reserve(computed_cells.size());
     auto next = computed_cells.begin();

@@ -60,6 +60,7 @@ namespace ndda
   {
     constraints.affine_constraints().condense(dsp);
     sparsity_pattern.copy_from(dsp);
+    assembled = false;
     stiffness_matrix.reinit(sparsity_pattern);
     mass_matrix.reinit(sparsity_pattern);
     damping_matrix.reinit(sparsity_pattern);
@@ -337,43 +338,6 @@ namespace ndda
     reinit_matrices(dsp, constraints);
     pattern_couplings.swap(merged);
     return true;
-  }
-
-
-
-  void
-  LinearSystem::assemble(const ElementCache<2> &element_cache,
-                         const DofMap          &dof_map,
-                         const BoltSprings     &bolts,
-                         const Vector<double>  &displacement)
-  {
-    stiffness_matrix                            = 0;
-    mass_matrix                                 = 0;
-    damping_matrix                              = 0;
-    damped                                      = false;
-    const unsigned int                   n_dofs = dof_map.dofs_per_cell;
-    std::vector<types::global_dof_index> dofs(n_dofs);
-    for (unsigned int c = 0; c < dof_map.n_cells(); ++c)
-      {
-        const auto &data = element_cache[c];
-        std::copy(dof_map.dofs_of_cell(c),
-                  dof_map.dofs_of_cell(c) + n_dofs,
-                  dofs.begin());
-        stiffness_matrix.add(dofs, data.stiffness);
-        mass_matrix.add(dofs, data.mass);
-        if (data.viscosity_over_density > 0)
-          {
-            damped = true;
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              for (unsigned int j = 0; j < dofs.size(); ++j)
-                damping_matrix.add(dofs[i],
-                                   dofs[j],
-                                   data.viscosity_over_density *
-                                     data.mass(i, j));
-          }
-      }
-    bolts.add_stiffness(displacement, stiffness_matrix);
-    matrices_changed = true;
   }
 
 

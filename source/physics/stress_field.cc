@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <deal.II/base/parallel.h>
+
 #include <ndda/physics/rotation.h>
 #include <ndda/physics/stress_field.h>
 
@@ -245,11 +247,11 @@ namespace ndda
 
 
   double
-  StressField::add_cell_force(const unsigned int           c,
-                              const Tensor<2, 2>          &F,
-                              const Stress                *sigma,
-                              const SymmetricTensor<4, 2> &compliance,
-                              Vector<double>              &force) const
+  StressField::cell_force(const unsigned int           c,
+                          const Tensor<2, 2>          &F,
+                          const Stress                *sigma,
+                          const SymmetricTensor<4, 2> &compliance,
+                          double                      *local_force) const
   {
     // With the element data's gradients on X and F = dx/dX,
     // int_x (dphi/dx) : sigma = int_X dphi/dX : P, P = det(F) sigma F^-T
@@ -258,7 +260,6 @@ namespace ndda
     const unsigned int  n_dofs    = dof_map->dofs_per_cell;
     const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
     const double       *weights   = element_cache->weights_of(c);
-    const auto         *dofs      = dof_map->dofs_of_cell(c);
     const auto         &law       = element_cache->get_constitutive_law();
     const auto         &material  = materials->materials[(*cell_material)[c]];
     const double        J         = determinant(F);
@@ -269,9 +270,46 @@ namespace ndda
         const Tensor<2, 2> P =
           (J * weights[q]) * (Tensor<2, 2>(sigma[q]) * F_inverse_transpose);
         for (unsigned int i = 0; i < n_dofs; ++i)
-          force[dofs[i]] += scalar_product(gradients[q * n_dofs + i], P);
+          local_force[q * n_dofs + i] =
+            scalar_product(gradients[q * n_dofs + i], P);
         energy +=
           law.energy_density(material, compliance, sigma[q]) * J * weights[q];
+      }
+    return energy;
+  }
+
+
+
+  template <typename CellForce>
+  double
+  StressField::sum_cell_forces(const CellForce &cell_force_of,
+                               Vector<double>  &force) const
+  {
+    // Each cell's force and energy on deal.II's threads, into arrays of
+    // their own; summed in cell order on one thread: the same sums, in
+    // the same order, however many threads there are.
+    const unsigned int n_local = n_points * dof_map->dofs_per_cell;
+    local_forces.resize(std::size_t(n_active_cells) * n_local);
+    local_energies.resize(n_active_cells);
+    parallel::apply_to_subranges(
+      0u,
+      n_active_cells,
+      [&](const unsigned int begin, const unsigned int end) {
+        for (unsigned int c = begin; c < end; ++c)
+          local_energies[c] =
+            cell_force_of(c, local_forces.data() + std::size_t(c) * n_local);
+      },
+      cell_grain_size);
+    force         = 0;
+    double energy = 0;
+    for (unsigned int c = 0; c < n_active_cells; ++c)
+      {
+        const auto   *dofs  = dof_map->dofs_of_cell(c);
+        const double *local = local_forces.data() + std::size_t(c) * n_local;
+        for (unsigned int q = 0; q < n_points; ++q)
+          for (unsigned int i = 0; i < dof_map->dofs_per_cell; ++i)
+            force[dofs[i]] += local[q * dof_map->dofs_per_cell + i];
+        energy += local_energies[c];
       }
     return energy;
   }
@@ -287,16 +325,16 @@ namespace ndda
     // The energy is the state function sum t int w(sigma) (w the law's
     // energy density); unlike the accumulated work d . f_int, it does not
     // drift when stresses turn.
-    force                                               = 0;
     const std::vector<SymmetricTensor<4, 2>> compliance = compliances();
-    double                                   energy     = 0;
-    for (unsigned int c = 0; c < n_active_cells; ++c)
-      energy += add_cell_force(c,
-                               deformation_gradient(c),
-                               (*this)[c].data(),
-                               compliance[(*cell_material)[c]],
-                               force);
-    return energy;
+    return sum_cell_forces(
+      [&](const unsigned int c, double *local_force) {
+        return cell_force(c,
+                          deformation_gradient(c),
+                          (*this)[c].data(),
+                          compliance[(*cell_material)[c]],
+                          local_force);
+      },
+      force);
   }
 
 
@@ -308,15 +346,14 @@ namespace ndda
     // One pass: each cell's start geometry (the present vertices) for
     // the stress update, its end geometry (the vertices moved by d, in
     // the arithmetic of CrackableMesh::move_vertices()) for the force.
-    force                                               = 0;
+    // A cell writes only its own stresses.
     const std::vector<SymmetricTensor<4, 2>> compliance = compliances();
     const auto &vertices   = triangulation->get_vertices();
     const auto &vertex_dof = dof_map->vertex_dofs;
-    double      energy     = 0;
-    for (unsigned int c = 0; c < n_active_cells; ++c)
-      {
+    return sum_cell_forces(
+      [&](const unsigned int c, double *local_force) {
         const unsigned int *cell_vertices = dof_map->vertices_of_cell(c);
-        Stress             *sigma         = (*this)[c].data();
+        Stress             *sigma = stress.data() + std::size_t(c) * n_points;
         Tensor<2, 2>        F_end;
         if (moves_in(c, d))
           {
@@ -332,9 +369,9 @@ namespace ndda
           }
         else
           F_end = deformation_gradient(c);
-        energy += add_cell_force(
-          c, F_end, sigma, compliance[(*cell_material)[c]], force);
-      }
-    return energy;
+        return cell_force(
+          c, F_end, sigma, compliance[(*cell_material)[c]], local_force);
+      },
+      force);
   }
 } // namespace ndda

@@ -252,18 +252,20 @@ namespace ndda
       const bool recompute =
         only_moved_cells ||
         ElementCache<2>::tangent_depends_on_stress(parameters.materials);
-      if (recompute &&
-          element_cache.update(dof_handler,
-                               dof_map,
-                               mapping,
-                               parameters.materials,
-                               tolerance > 0.,
-                               tolerance,
-                               &stresses.values(),
-                               &frames.cell_angles()) == 0 &&
-          !always_assemble)
+      const unsigned int n_computed =
+        recompute ? element_cache.update(dof_handler,
+                                         dof_map,
+                                         mapping,
+                                         parameters.materials,
+                                         tolerance > 0.,
+                                         tolerance,
+                                         &stresses.values(),
+                                         &frames.cell_angles()) :
+                    0;
+      if (recompute && n_computed == 0 && !always_assemble)
         return false;
-      assemble(displacement);
+      assemble(displacement,
+               n_computed > 0 ? &element_cache.get_computed_cells() : nullptr);
       loads.update_gravity(linear_system.get_mass_matrix(), dof_map);
       if (only_moved_cells)
         loads.update_faces(dof_handler,
@@ -276,9 +278,11 @@ namespace ndda
 
 
     void
-    Discretization::assemble(const Vector<double> &displacement)
+    Discretization::assemble(const Vector<double>            &displacement,
+                             const std::vector<unsigned int> *changed_cells)
     {
-      linear_system.assemble(element_cache, dof_map, bolts, displacement);
+      linear_system.assemble(
+        element_cache, dof_map, bolts, displacement, changed_cells);
       block_nodes.setup(mesh,
                         dof_map,
                         constraints,

@@ -117,12 +117,20 @@ namespace ndda
     /**
      * Assemble K, M and C from the element matrices of every cell and the
      * bolt springs on the present @p displacement.
+     *
+     * @param changed_cells If given, the matrices hold a full assembly
+     * except for these cells, whose element matrices have changed since
+     * (ElementCache::get_computed_cells()): only the rows of their dofs
+     * are summed again, to the same values, bit for bit, as a full
+     * assembly gives. A full assembly is done anyway after reinit(), with
+     * bolts, or when half the cells or more changed.
      */
     void
-    assemble(const ElementCache<2> &element_cache,
-             const DofMap          &dof_map,
-             const BoltSprings     &bolts,
-             const Vector<double>  &displacement);
+    assemble(const ElementCache<2>           &element_cache,
+             const DofMap                    &dof_map,
+             const BoltSprings               &bolts,
+             const Vector<double>            &displacement,
+             const std::vector<unsigned int> *changed_cells = nullptr);
 
     /**
      * Make the system matrix of a step of size @p dt, A = K + c_M M + c_C C
@@ -202,6 +210,13 @@ namespace ndda
       return mass_matrix;
     }
 
+    /** The stiffness matrix K (with the bolt springs). */
+    const SparseMatrix<double> &
+    get_stiffness_matrix() const
+    {
+      return stiffness_matrix;
+    }
+
     /** The row sums of the mass matrix: nodal masses (kg). */
     Vector<double>
     lumped_mass() const;
@@ -254,6 +269,15 @@ namespace ndda
     }
 
   private:
+    /**
+     * Add the rows of a cell's element matrices @p data on its @p dofs to
+     * K, M and C; only the rows of dofs marked in @p rows, if given.
+     */
+    void
+    add_cell_rows(const ElementCache<2>::CellData            &data,
+                  const std::vector<types::global_dof_index> &dofs,
+                  const std::vector<bool>                    *rows);
+
     /** Condense @p dsp, make it the sparsity pattern, and reinit every
      * matrix on it (their entries are zero then). */
     void
@@ -391,8 +415,11 @@ namespace ndda
                                                 const unsigned int    gmres_iterations);
     const BlockFrames            *frames = nullptr;
     std::unique_ptr<LinearSolver> linear_solver;
-    bool                          damped       = false;
-    double                        assembled_dt = -1;
+    bool                          damped = false;
+    /// K, M and C hold a full assembly (assemble()) on the present
+    /// pattern; reinit_matrices() zeroes them.
+    bool   assembled    = false;
+    double assembled_dt = -1;
     /// The mass and damping coefficients of the assembled system matrix.
     std::array<double, 2> assembled_coefficients = {{-1., -1.}};
     bool                  matrices_changed       = true;

@@ -198,16 +198,30 @@ namespace ndda
                  Stress               *sigma) const;
 
     /**
-     * Add the internal force of the stresses @p sigma of cell @p c, whose
-     * deformation gradient is @p F, to @p force; return their energy,
-     * @p compliance the inverse of the tangent of its material.
+     * The internal force of the stresses @p sigma of cell @p c, whose
+     * deformation gradient is @p F, into @p local_force (its n_points
+     * times dofs_per_cell terms, point by point, in the order of the
+     * cell's dofs); return their energy, @p compliance the inverse of the
+     * tangent of its material.
      */
     double
-    add_cell_force(const unsigned int           c,
-                   const Tensor<2, 2>          &F,
-                   const Stress                *sigma,
-                   const SymmetricTensor<4, 2> &compliance,
-                   Vector<double>              &force) const;
+    cell_force(const unsigned int           c,
+               const Tensor<2, 2>          &F,
+               const Stress                *sigma,
+               const SymmetricTensor<4, 2> &compliance,
+               double                      *local_force) const;
+
+    /**
+     * Set @p force to the sum of every cell's force and return the sum of
+     * their energies, @p cell_force_of(c, local_force) giving cell c's
+     * (as cell_force()); called on deal.II's threads, it must write only
+     * what belongs to cell c. The sums are taken in cell order on one
+     * thread: the result does not depend on the number of threads.
+     */
+    template <typename CellForce>
+    double
+    sum_cell_forces(const CellForce &cell_force_of,
+                    Vector<double>  &force) const;
 
     /** The inverse of the tangent of every material (for the energy). */
     std::vector<SymmetricTensor<4, 2>>
@@ -223,6 +237,11 @@ namespace ndda
     std::vector<Stress> stress;
     unsigned int        n_active_cells = 0;
     unsigned int        n_points       = 0;
+
+    /// Cells per task of the loops on threads.
+    static constexpr unsigned int cell_grain_size = 2048;
+    /// Scratch of sum_cell_forces(): every cell's force terms and energy.
+    mutable std::vector<double> local_forces, local_energies;
   };
 
 } // namespace ndda

@@ -168,9 +168,14 @@ namespace ndda
                       const StressField            &stresses,
                       const bool                    always_assemble = false);
 
-      /** Assemble K, M and C (bolt springs on @p displacement). */
+      /**
+       * Assemble K, M and C (bolt springs on @p displacement); with
+       * @p changed_cells, only the rows that these cells' new element
+       * matrices change (LinearSystem::assemble()).
+       */
       void
-      assemble(const Vector<double> &displacement);
+      assemble(const Vector<double>            &displacement,
+               const std::vector<unsigned int> *changed_cells = nullptr);
 
       /**
        * The external force at time @p t on the present geometry: loads and

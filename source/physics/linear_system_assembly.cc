@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include <ndda/physics/linear_system.h>
+
+#include <algorithm>
+
+namespace ndda
+{
+  namespace
+  {
+    /** Set every entry of row @p row of @p matrix to zero. */
+    void
+    zero_row(SparseMatrix<double> &matrix, const types::global_dof_index row)
+    {
+      for (auto entry = matrix.begin(row); entry != matrix.end(row); ++entry)
+        entry->value() = 0.;
+    }
+  } // namespace
+
+
+
+  void
+  LinearSystem::add_cell_rows(const ElementCache<2>::CellData            &data,
+                              const std::vector<types::global_dof_index> &dofs,
+                              const std::vector<bool>                    *rows)
+  {
+    // Row by row, as SparseMatrix::add(indices, full_matrix) adds a full
+    // matrix: the same additions in the same order.
+    const unsigned int n = dofs.size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (rows != nullptr && !(*rows)[dofs[i]])
+          continue;
+        stiffness_matrix.add(dofs[i], n, dofs.data(), &data.stiffness(i, 0));
+        mass_matrix.add(dofs[i], n, dofs.data(), &data.mass(i, 0));
+        if (data.viscosity_over_density > 0)
+          {
+            damped = true;
+            for (unsigned int j = 0; j < n; ++j)
+              damping_matrix.add(dofs[i],
+                                 dofs[j],
+                                 data.viscosity_over_density * data.mass(i, j));
+          }
+      }
+  }
+
+
+
+  void
+  LinearSystem::assemble(const ElementCache<2>           &element_cache,
+                         const DofMap                    &dof_map,
+                         const BoltSprings               &bolts,
+                         const Vector<double>            &displacement,
+                         const std::vector<unsigned int> *changed_cells)
+  {
+    matrices_changed                             = true;
+    const unsigned int                   n_dofs  = dof_map.dofs_per_cell;
+    const unsigned int                   n_cells = dof_map.n_cells();
+    std::vector<types::global_dof_index> dofs(n_dofs);
+    const auto                           dofs_of = [&](const unsigned int c) {
+      std::copy(dof_map.dofs_of_cell(c),
+                dof_map.dofs_of_cell(c) + n_dofs,
+                dofs.begin());
+    };
+
+    // Only some cells changed since the last full assembly: the rows of
+    // their dofs are summed again, from every cell on those dofs in cell
+    // order, so that every entry is the same sum, added in the same order,
+    // as in a full assembly (bit for bit; unit test linear_system). Bolt
+    // springs are added after the cells and depend on the displacement:
+    // with bolts, every row is summed again.
+    if (changed_cells != nullptr && assembled && bolts.empty() &&
+        2 * changed_cells->size() < n_cells)
+      {
+        std::vector<bool> rows(stiffness_matrix.m(), false);
+        for (const unsigned int c : *changed_cells)
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            rows[dof_map.dofs_of_cell(c)[i]] = true;
+        for (types::global_dof_index r = 0; r < rows.size(); ++r)
+          if (rows[r])
+            {
+              zero_row(stiffness_matrix, r);
+              zero_row(mass_matrix, r);
+              if (damped)
+                zero_row(damping_matrix, r);
+            }
+        for (unsigned int c = 0; c < n_cells; ++c)
+          {
+            const auto *cell_dofs = dof_map.dofs_of_cell(c);
+            if (std::none_of(cell_dofs, cell_dofs + n_dofs, [&](auto i) {
+                  return static_cast<bool>(rows[i]);
+                }))
+              continue;
+            dofs_of(c);
+            add_cell_rows(element_cache[c], dofs, &rows);
+          }
+        return;
+      }
+
+    stiffness_matrix = 0;
+    mass_matrix      = 0;
+    damping_matrix   = 0;
+    damped           = false;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        dofs_of(c);
+        add_cell_rows(element_cache[c], dofs, nullptr);
+      }
+    bolts.add_stiffness(displacement, stiffness_matrix);
+    assembled = true;
+  }
+} // namespace ndda
