@@ -3,6 +3,7 @@
 // The ndda program: runs one scene described by a .prm file.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <ndda/parameters/parameters.h>
 #include <ndda/simulator.h>
@@ -28,13 +29,16 @@ namespace
            "nothing\n"
         << "  ndda --print-parameters      print every parameter with its "
            "documentation\n"
+        << "  ndda --threads N ...         any of the above on N threads "
+           "(default 1);\n"
+        << "                               runs on 2 or more threads agree "
+           "to the last bit,\n"
+        << "                               with one thread to round-off "
+           "(doc/design.md)\n"
         << "  ndda --help                  this text\n"
         << "\n"
         << "Output goes to output/<scene name>/ unless Output/Directory "
-           "says otherwise.\n"
-        << "ndda runs on as many threads as the machine has cores; "
-           "DEAL_II_NUM_THREADS=N\n"
-        << "sets their number. The results do not depend on it.\n";
+           "says otherwise.\n";
   }
 
   void
@@ -63,10 +67,10 @@ main(int argc, char **argv)
 {
   try
     {
-      // As many threads as the machine has cores, or DEAL_II_NUM_THREADS;
-      // the results do not depend on their number (set_up_threads()).
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(
-        argc, argv, dealii::numbers::invalid_unsigned_int);
+      // One thread unless `--threads N` (ndda/base/threads.h: runs on two
+      // or more threads agree with each other to the last bit, and with a
+      // run on one thread to round-off only).
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
       // Every process would run the whole scene and write the same output
       // files: refuse until the distributed solver exists (issue 19).
       const unsigned int n_processes =
@@ -82,7 +86,29 @@ main(int argc, char **argv)
           return 1;
         }
 
-      const std::vector<std::string> args(argv + 1, argv + argc);
+      std::vector<std::string> args(argv + 1, argv + argc);
+      if (args.size() >= 1 && args[0] == "--threads")
+        {
+          unsigned int n_threads = 0;
+          try
+            {
+              if (args.size() >= 2 &&
+                  args[1].find_first_not_of("0123456789") == std::string::npos)
+                n_threads = std::stoul(args[1]);
+            }
+          catch (const std::exception &)
+            {
+              n_threads = 0;
+            }
+          if (n_threads == 0)
+            {
+              std::cerr << "ndda: --threads needs a number of threads of 1 or "
+                           "more, as in 'ndda --threads 2 scene.prm'.\n";
+              return 1;
+            }
+          dealii::MultithreadInfo::set_thread_limit(n_threads);
+          args.erase(args.begin(), args.begin() + 2);
+        }
       if (args.empty() || args[0] == "--help" || args[0] == "-h")
         {
           print_help(std::cout);

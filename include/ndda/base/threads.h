@@ -10,12 +10,17 @@ namespace ndda
   /**
    * @name Threads whose number does not change a result
    *
-   * ndda runs on deal.II's threads (MultithreadInfo: as many as the
-   * machine has cores, or `DEAL_II_NUM_THREADS`). A loop on them writes
-   * one result per cell or per row into an array of its own; whatever
-   * must be summed over cells or rows is summed from that array in order
-   * on one thread. So a run's results are the same, to the last bit, on
-   * any number of threads (unit test thread_count).
+   * ndda runs on deal.II's threads (MultithreadInfo): one unless
+   * `ndda --threads N`; the benchmarks take as many as the machine has
+   * cores, or `DEAL_II_NUM_THREADS`. A loop on them writes one result per
+   * cell or per row into an array of its own; whatever must be summed over
+   * cells or rows is summed from that array in order on one thread. So runs
+   * on two or more threads agree to the last bit (unit test thread_count:
+   * 2 and 3 threads). A run on one thread agrees with them to round-off
+   * only: on one thread deal.II's FEValues reuses the mapping data of a
+   * cell for the next cell when that is a translation of it, and on more
+   * threads it never does (FEValuesBase::check_cell_similarity(), deal.II
+   * 9.4), so element matrices differ in their last bits.
    */
   /** @{ */
 
