@@ -30,10 +30,10 @@ namespace
         << "  ndda --print-parameters      print every parameter with its "
            "documentation\n"
         << "  ndda --threads N ...         any of the above on N threads "
-           "(default 1);\n"
-        << "                               runs on 2 or more threads agree "
-           "to the last bit,\n"
-        << "                               with one thread to round-off "
+           "(default: every\n"
+        << "                               core, or DEAL_II_NUM_THREADS); "
+           "the results do not\n"
+        << "                               depend on the number of threads "
            "(doc/design.md)\n"
         << "  ndda --help                  this text\n"
         << "\n"
@@ -67,10 +67,10 @@ main(int argc, char **argv)
 {
   try
     {
-      // One thread unless `--threads N` (ndda/base/threads.h: runs on two
-      // or more threads agree with each other to the last bit, and with a
-      // run on one thread to round-off only).
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+      // Every core (or DEAL_II_NUM_THREADS) unless `--threads N`; the
+      // results do not depend on the number of threads (ndda/base/threads.h).
+      dealii::Utilities::MPI::MPI_InitFinalize mpi(
+        argc, argv, dealii::numbers::invalid_unsigned_int);
       // Every process would run the whole scene and write the same output
       // files: refuse until the distributed solver exists (issue 19).
       const unsigned int n_processes =

@@ -207,7 +207,7 @@ namespace
     }
 
     parameters::Materials     materials;
-    MappingFE<2>              mapping;
+    LinearMapping             mapping;
     CrackableMesh             mesh;
     std::unique_ptr<Element>  element;
     DoFHandler<2>             dof_handler;

@@ -150,9 +150,39 @@ namespace ndda
 
 
 
-  MappingFE<2>
+  LinearMapping::LinearMapping()
+    : MappingFE<2>(FE_SimplexP<2>(1))
+  {}
+
+
+
+  std::unique_ptr<Mapping<2>>
+  LinearMapping::clone() const
+  {
+    return std::make_unique<LinearMapping>(*this);
+  }
+
+
+
+  CellSimilarity::Similarity
+  LinearMapping::fill_fe_values(
+    const Triangulation<2>::cell_iterator &cell,
+    const CellSimilarity::Similarity,
+    const Quadrature<2>                &quadrature,
+    const Mapping<2>::InternalDataBase &internal_data,
+    dealii::internal::FEValuesImplementation::MappingRelatedData<2>
+      &output_data) const
+  {
+    MappingFE<2>::fill_fe_values(
+      cell, CellSimilarity::none, quadrature, internal_data, output_data);
+    return CellSimilarity::none;
+  }
+
+
+
+  LinearMapping
   linear_mapping()
   {
-    return MappingFE<2>(FE_SimplexP<2>(1));
+    return LinearMapping();
   }
 } // namespace ndda

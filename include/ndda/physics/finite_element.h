@@ -16,6 +16,41 @@ namespace ndda
   using namespace dealii;
 
   /**
+   * The linear mapping of the triangle, MappingFE(FE_SimplexP(1)), that
+   * computes every cell's mapping data afresh.
+   *
+   * deal.II 9.4's FEValues reuses a cell's Jacobians for the next cell when
+   * that cell is a translation of it (CellSimilarity::translation), but only
+   * when it runs on one thread (FEValues::check_cell_similarity()). The
+   * reused and the recomputed data differ at round-off, so a run on one
+   * thread and one on two parted in the seventh digit of an energy after a
+   * few contact steps. This mapping passes CellSimilarity::none on and
+   * returns it, so that every cell is computed as on two threads, and a
+   * run's figures do not depend on the number of threads (doc/design.md).
+   *
+   * @ingroup physics
+   */
+  class LinearMapping : public MappingFE<2>
+  {
+  public:
+    LinearMapping();
+
+    std::unique_ptr<Mapping<2>>
+    clone() const override;
+
+    /// MappingFE::fill_fe_values() with CellSimilarity::none, whatever
+    /// FEValues passed; returns CellSimilarity::none.
+    CellSimilarity::Similarity
+    fill_fe_values(
+      const Triangulation<2>::cell_iterator &cell,
+      const CellSimilarity::Similarity       cell_similarity,
+      const Quadrature<2>                   &quadrature,
+      const Mapping<2>::InternalDataBase    &internal_data,
+      dealii::internal::FEValuesImplementation::MappingRelatedData<2>
+        &output_data) const override;
+  };
+
+  /**
    * A scene's finite element and everything that must travel with it
    * (DESIGN.md decision 2): the displacement element, its quadratures, the
    * mapping and the output subdivisions. Made by make_element() only, so
@@ -38,7 +73,7 @@ namespace ndda
     /// QGaussSimplex<1>(degree + 1).
     Quadrature<1> face_quadrature;
     /// The mapping, linear_mapping() for every element (see there).
-    MappingFE<2> mapping;
+    LinearMapping mapping;
     /// DataOut::build_patches() subdivisions: the element's degree, at most
     /// 2 (deal.II 9.4.1 writes triangles as linear or quadratic VTK cells
     /// only). HDF5/XDMF output works only with 1.
@@ -77,7 +112,7 @@ namespace ndda
 
   /**
    * The mapping of every element make_element() accepts: the linear
-   * mapping of the triangle, MappingFE(FE_SimplexP(1)), whatever the
+   * mapping of the triangle, a LinearMapping, whatever the
    * degree. ndda moves the mesh by its vertices, so cells stay
    * straight-sided triangles. It depends on the reference cell only, so a
    * Simulator holds it from its construction on, before it knows its
@@ -85,7 +120,7 @@ namespace ndda
    *
    * @ingroup physics
    */
-  MappingFE<2>
+  LinearMapping
   linear_mapping();
 } // namespace ndda
 

@@ -21,6 +21,7 @@
 #include <ndda/physics/constraints.h>
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
+#include <ndda/physics/finite_element.h>
 #include <ndda/physics/linear_system.h>
 #include <ndda/physics/loads.h>
 #include <ndda/physics/stress_field.h>
@@ -216,7 +217,7 @@ namespace ndda
 
       CrackableMesh                 &mesh;
       std::unique_ptr<FESystem<2>>   fe;
-      MappingFE<2>                   mapping;
+      LinearMapping                  mapping;
       std::unique_ptr<Quadrature<1>> face_quadrature;
       unsigned int                   n_output_subdivisions = 1;
       DoFHandler<2>                  dof_handler;
