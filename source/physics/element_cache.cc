@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include <deal.II/base/parallel.h>
+#include <deal.II/base/work_stream.h>
 
 #include <deal.II/fe/fe_values.h>
 
@@ -398,33 +399,59 @@ namespace ndda
     tangents.clear();
     for (const auto &material : materials.materials)
       tangents.push_back(law->tangent(material, materials.plane_strain));
-    std::vector<SymmetricTensor<4, dim>> C(n_q_points);
     // Before the initial state is set the stresses are not sized yet.
     const bool stresses_known =
       point_tangents && stresses->size() == std::size_t(n_cells) * n_q_points;
-    const auto [partner, component] = node_pairs(fe);
+    const auto   node_pair = node_pairs(fe);
+    const double t         = materials.thickness;
 
-    FEValues<dim> fe_values(mapping,
-                            fe,
-                            quadrature,
-                            update_gradients | update_JxW_values);
-    FEValues<dim> mass_values(mapping,
-                              fe,
-                              mass_quadrature,
-                              update_values | update_JxW_values);
-    const double  t = materials.thickness;
-
-    for (const auto &cell : cells)
-      {
-        const unsigned int c = cell->active_cell_index();
-        CellData          &d = data[c];
-        const double       frame_angle =
+    // Every cell on deal.II's threads (WorkStream), each thread with
+    // FEValues of its own; a cell writes only its own entries, so the data
+    // do not depend on the number of threads (LinearMapping computes every
+    // cell afresh).
+    struct Scratch
+    {
+      Scratch(const Mapping<dim>       &mapping,
+              const FiniteElement<dim> &fe,
+              const Quadrature<dim>    &quadrature,
+              const Quadrature<dim>    &mass_quadrature)
+        : fe_values(mapping,
+                    fe,
+                    quadrature,
+                    update_gradients | update_JxW_values)
+        , mass_values(mapping,
+                      fe,
+                      mass_quadrature,
+                      update_values | update_JxW_values)
+        , C(quadrature.size())
+      {}
+      Scratch(const Scratch &other)
+        : Scratch(other.fe_values.get_mapping(),
+                  other.fe_values.get_fe(),
+                  other.fe_values.get_quadrature(),
+                  other.mass_values.get_quadrature())
+      {}
+      FEValues<dim>                        fe_values;
+      FEValues<dim>                        mass_values;
+      std::vector<SymmetricTensor<4, dim>> C;
+    };
+    struct NoCopy
+    {};
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
+    const auto compute =
+      [&](const typename std::vector<CellIterator>::const_iterator &position,
+          Scratch                                                  &scratch,
+          NoCopy &) {
+        const CellIterator &cell = *position;
+        const unsigned int  c    = cell->active_cell_index();
+        CellData           &d    = data[c];
+        const double        frame_angle =
           frame_angles != nullptr ? (*frame_angles)[c] : 0.;
-        fe_values.reinit(cell);
-        mass_values.reinit(cell);
+        scratch.fe_values.reinit(cell);
+        scratch.mass_values.reinit(cell);
         const auto &material = materials.materials[cell->material_id()];
         for (unsigned int q = 0; q < n_q_points; ++q)
-          C[q] =
+          scratch.C[q] =
             stresses_known ?
               law->point_tangent(material,
                                  materials.plane_strain,
@@ -434,21 +461,30 @@ namespace ndda
         d.viscosity_over_density =
           material.density > 0 ? material.viscosity / material.density : 0.;
         const double density =
-          conserved_density(fe_values, material.density, d);
+          conserved_density(scratch.fe_values, material.density, d);
 
-        add_operators(fe_values,
-                      C,
+        add_operators(scratch.fe_values,
+                      scratch.C,
                       t,
                       d.stiffness,
                       gradients.data() +
                         std::size_t(c) * n_q_points * dofs_per_cell,
                       weights.data() + std::size_t(c) * n_q_points);
         if (frame_angle != 0.)
-          turn_to_frame(d.stiffness, partner, component, frame_angle);
-        add_mass_matrix(mass_values, density * t, d.mass);
+          turn_to_frame(d.stiffness,
+                        node_pair.first,
+                        node_pair.second,
+                        frame_angle);
+        add_mass_matrix(scratch.mass_values, density * t, d.mass);
         record_geometry(cell, geometry[c]);
         geometry[c].frame_angle = frame_angle;
-      }
+      };
+    WorkStream::run(cells.cbegin(),
+                    cells.cend(),
+                    compute,
+                    std::function<void(const NoCopy &)>(),
+                    Scratch(mapping, fe, quadrature, mass_quadrature),
+                    NoCopy());
     return computed_cells.size();
   }
 

@@ -40,9 +40,10 @@ namespace ndda
    * same tangent (forward Euler), the internal force at the step's end
    * balances the loads exactly.
    *
-   * update_stress() and energy_density() are called on deal.II's threads
-   * (ndda/base/threads.h), for several cells at once: they must change
-   * nothing but their @p stress (a law that caches must guard its cache).
+   * update_stress(), energy_density() and point_tangent() are called on
+   * deal.II's threads (ndda/base/threads.h), for several cells at once:
+   * they must change nothing but their @p stress (a law that caches must
+   * guard its cache).
    *
    * A law is a plugin (NDDA_REGISTER_PLUGIN with this interface):
    * `set Constitutive law = name` in `subsection Materials` selects it, and
