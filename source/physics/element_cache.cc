@@ -192,35 +192,47 @@ namespace ndda
 
 
     /**
-     * The gradient of every shape function and t JxW at the points of
-     * @p values (the cell quadrature), into @p gradient and @p weight (the
-     * cell's entries of the flat arrays), and the stiffness
-     * t int B^T C B into @p stiffness.
+     * The gradient of the scalar shape function of every node and t JxW at
+     * the points of @p values (the cell quadrature), into @p gradient and
+     * @p weight (the cell's entries of the flat arrays; @p component and
+     * @p node those of each local dof, ElementCache::dof_components() and
+     * dof_nodes()), and the stiffness t int B^T C B into @p stiffness,
+     * @p vector_gradient a scratch array of a gradient per local dof.
      */
     template <int dim>
     void
     add_operators(const FEValues<dim>                        &values,
                   const std::vector<SymmetricTensor<4, dim>> &C,
                   const double                                t,
+                  const std::vector<unsigned int>            &component,
+                  const std::vector<unsigned int>            &node,
                   FullMatrix<double>                         &stiffness,
-                  Tensor<2, dim>                             *gradient,
+                  std::vector<Tensor<2, dim>>                &vector_gradient,
+                  Tensor<1, dim>                             *gradient,
                   double                                     *weight)
     {
       const FEValuesExtractors::Vector u(0);
       const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
+      const unsigned int n_nodes =
+        values.get_fe().base_element(0).n_dofs_per_cell();
       stiffness.reinit(n_dofs, n_dofs);
+      vector_gradient.resize(n_dofs);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         {
           weight[q] = t * values.JxW(q);
           for (unsigned int i = 0; i < n_dofs; ++i)
-            gradient[q * n_dofs + i] = values[u].gradient(i, q);
+            {
+              vector_gradient[i] = values[u].gradient(i, q);
+              gradient[q * n_nodes + node[i]] =
+                vector_gradient[i][component[i]];
+            }
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const SymmetricTensor<2, dim> Ceps_i =
-                C[q] * symmetrize(gradient[q * n_dofs + i]);
+                C[q] * symmetrize(vector_gradient[i]);
               for (unsigned int j = 0; j < n_dofs; ++j)
                 stiffness(i, j) +=
-                  (Ceps_i * symmetrize(gradient[q * n_dofs + j])) * weight[q];
+                  (Ceps_i * symmetrize(vector_gradient[j])) * weight[q];
             }
         }
     }
@@ -250,8 +262,8 @@ namespace ndda
     // The parts of bisected cells start with no geometry (diameter 0):
     // update() computes them.
     std::vector<CellGeometry>   carried_geometry(n_cells);
-    const unsigned int          n_gradients = n_q_points * dofs_per_cell;
-    std::vector<Tensor<2, dim>> carried_gradients(std::size_t(n_cells) *
+    const unsigned int          n_gradients = n_q_points * nodes_per_cell;
+    std::vector<Tensor<1, dim>> carried_gradients(std::size_t(n_cells) *
                                                   n_gradients);
     std::vector<double> carried_weights(std::size_t(n_cells) * n_q_points);
     for (unsigned int c = 0; c < n_cells; ++c)
@@ -294,8 +306,8 @@ namespace ndda
     data.clear();
     data.resize(n_cells);
     geometry.assign(n_cells, CellGeometry());
-    gradients.assign(std::size_t(n_cells) * n_q_points * dofs_per_cell,
-                     Tensor<2, dim>());
+    gradients.assign(std::size_t(n_cells) * n_q_points * nodes_per_cell,
+                     Tensor<1, dim>());
     weights.assign(std::size_t(n_cells) * n_q_points, 0.);
   }
 
@@ -377,8 +389,23 @@ namespace ndda
     if (data.size() != n_cells || n_q_points != quadrature.size() ||
         dofs_per_cell != fe.n_dofs_per_cell())
       {
-        n_q_points    = quadrature.size();
-        dofs_per_cell = fe.n_dofs_per_cell();
+        // The vector element is dim copies of one scalar element
+        // (Element): a local dof is a component of a node.
+        AssertThrow(fe.n_base_elements() == 1 &&
+                      fe.element_multiplicity(0) == dim && fe.is_primitive(),
+                    ExcMessage("ElementCache: the finite element " +
+                               fe.get_name() +
+                               " is not dim copies of one scalar element."));
+        n_q_points     = quadrature.size();
+        dofs_per_cell  = fe.n_dofs_per_cell();
+        nodes_per_cell = fe.base_element(0).n_dofs_per_cell();
+        dof_component.resize(dofs_per_cell);
+        dof_node.resize(dofs_per_cell);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            dof_component[i] = fe.system_to_component_index(i).first;
+            dof_node[i]      = fe.system_to_component_index(i).second;
+          }
         resize(n_cells);
       }
     law = law_of(materials);
@@ -434,6 +461,7 @@ namespace ndda
       FEValues<dim>                        fe_values;
       FEValues<dim>                        mass_values;
       std::vector<SymmetricTensor<4, dim>> C;
+      std::vector<Tensor<2, dim>>          vector_gradient;
     };
     struct NoCopy
     {};
@@ -466,9 +494,12 @@ namespace ndda
         add_operators(scratch.fe_values,
                       scratch.C,
                       t,
+                      dof_component,
+                      dof_node,
                       d.stiffness,
+                      scratch.vector_gradient,
                       gradients.data() +
-                        std::size_t(c) * n_q_points * dofs_per_cell,
+                        std::size_t(c) * n_q_points * nodes_per_cell,
                       weights.data() + std::size_t(c) * n_q_points);
         if (frame_angle != 0.)
           turn_to_frame(d.stiffness,

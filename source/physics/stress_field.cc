@@ -91,24 +91,20 @@ namespace ndda
   StressField::cell_rotation(const unsigned int    c,
                              const Vector<double> &d) const
   {
-    const unsigned int  n_dofs    = dof_map->dofs_per_cell;
-    const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
-    const double       *weights   = element_cache->weights_of(c);
-    const auto         *dofs      = dof_map->dofs_of_cell(c);
-    const Tensor<2, 2>  F         = deformation_gradient(c);
-    const Tensor<2, 2>  F_inverse = invert(F);
-    const double        J         = determinant(F);
-    const bool          moves     = moves_in(c, d);
-    double              rotation = 0, area = 0;
+    const double      *weights   = element_cache->weights_of(c);
+    const auto        *dofs      = dof_map->dofs_of_cell(c);
+    const Tensor<2, 2> F         = deformation_gradient(c);
+    const Tensor<2, 2> F_inverse = invert(F);
+    const double       J         = determinant(F);
+    const bool         moves     = moves_in(c, d);
+    double             rotation = 0, area = 0;
     for (unsigned int q = 0; q < element_cache->n_quadrature_points(); ++q)
       {
         area += J * weights[q];
         if (!moves)
           continue;
-        Tensor<2, 2> gradient;
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          gradient += d[dofs[i]] * gradients[q * n_dofs + i];
-        const Tensor<2, 2> G = gradient * F_inverse;
+        const Tensor<2, 2> G =
+          element_cache->field_gradient(c, q, d, dofs) * F_inverse;
         rotation += 0.5 * (G[1][0] - G[0][1]) * J * weights[q];
       }
     return {rotation, area};
@@ -127,19 +123,14 @@ namespace ndda
     // increment's gradient there is (dd/dX) F^-1. Its polar split turns
     // the stress exactly and strains the cell by its stretch only: rigid
     // motion of any size leaves the stress as it was, turned.
-    const unsigned int  n_dofs    = dof_map->dofs_per_cell;
-    const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
-    const auto         *dofs      = dof_map->dofs_of_cell(c);
-    const unsigned int  material  = (*cell_material)[c];
-    const auto         &law       = element_cache->get_constitutive_law();
-    const auto         &C         = element_cache->get_tangents()[material];
+    const auto        *dofs     = dof_map->dofs_of_cell(c);
+    const unsigned int material = (*cell_material)[c];
+    const auto        &law      = element_cache->get_constitutive_law();
+    const auto        &C        = element_cache->get_tangents()[material];
     for (unsigned int q = 0; q < n_points; ++q)
       {
-        Tensor<2, 2> gradient;
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          gradient += d[dofs[i]] * gradients[q * n_dofs + i];
-        const rotation::StepStrain step =
-          rotation::step_strain(gradient * F_inverse);
+        const rotation::StepStrain step = rotation::step_strain(
+          element_cache->field_gradient(c, q, d, dofs) * F_inverse);
         if (step.sin != 0. || step.cos_minus_one != 0.)
           sigma[q] =
             rotation::turn(sigma[q], 1. + step.cos_minus_one, step.sin);
@@ -258,7 +249,10 @@ namespace ndda
     // (the first Piola-Kirchhoff stress), exact however far the cell has
     // turned or moved since its data were computed.
     const unsigned int  n_dofs    = dof_map->dofs_per_cell;
-    const Tensor<2, 2> *gradients = element_cache->gradients_of(c);
+    const unsigned int  n_nodes   = element_cache->n_nodes_per_cell();
+    const Tensor<1, 2> *gradients = element_cache->gradients_of(c);
+    const auto         &component = element_cache->dof_components();
+    const auto         &node      = element_cache->dof_nodes();
     const double       *weights   = element_cache->weights_of(c);
     const auto         &law       = element_cache->get_constitutive_law();
     const auto         &material  = materials->materials[(*cell_material)[c]];
@@ -269,9 +263,11 @@ namespace ndda
       {
         const Tensor<2, 2> P =
           (J * weights[q]) * (Tensor<2, 2>(sigma[q]) * F_inverse_transpose);
+        // dphi_i/dX : P, with dphi_i/dX the node's gradient in row
+        // component[i]: that row of P times it.
         for (unsigned int i = 0; i < n_dofs; ++i)
           local_force[q * n_dofs + i] =
-            scalar_product(gradients[q * n_dofs + i], P);
+            P[component[i]] * gradients[q * n_nodes + node[i]];
         energy +=
           law.energy_density(material, compliance, sigma[q]) * J * weights[q];
       }

@@ -37,9 +37,12 @@ namespace ndda
    *   time-step factor), with rho scaled to keep the cell's initial mass,
    * - at every point of the element's cell quadrature (QGaussSimplex(p),
    *   one point for P1, whose strain is constant; the stress lives at these
-   *   points), the gradient of each shape function and t * JxW, so that
-   *   stress updates and internal forces need no FEValues in the time
-   *   loop (gradients_of(), weights_of()),
+   *   points), the gradient of the scalar shape function of each node and
+   *   t * JxW, so that stress updates and internal forces need no FEValues
+   *   in the time loop (gradients_of(), weights_of()). The vector shape
+   *   function of local dof i is that of node dof_nodes()[i] in component
+   *   dof_components()[i]: a node's two dofs share one gradient, a quarter
+   *   of the memory a gradient tensor per dof would stream,
    * - the cell's vertices and the inverse of its edge matrix
    *   [X1 - X0, X2 - X0] at the moment of computation (CellGeometry), so
    *   that the deformation gradient F = dx/dX of the cell's (affine)
@@ -113,8 +116,8 @@ namespace ndda
     void
     serialize(Archive &ar)
     {
-      ar &data &geometry &gradients &weights &dofs_per_cell &tangents
-        &computed_cells;
+      ar &data &geometry &gradients &weights &dofs_per_cell &nodes_per_cell
+        &dof_component &dof_node &tangents &computed_cells;
     }
 
     /**
@@ -173,15 +176,63 @@ namespace ndda
     }
 
     /**
-     * The gradients d phi_i / dX of the (vector) shape functions of cell
-     * @p cell at its quadrature points, on the geometry of the
-     * computation: entry q * dofs_per_cell + i for shape function i at
-     * point q.
+     * The gradients d phi_n / dX of the scalar shape functions of the
+     * nodes of cell @p cell at its quadrature points, on the geometry of
+     * the computation: entry q * n_nodes_per_cell() + n for node n at
+     * point q. The vector shape function of local dof i has the gradient
+     * of node dof_nodes()[i] in row dof_components()[i], zero elsewhere.
      */
-    const Tensor<2, dim> *
+    const Tensor<1, dim> *
     gradients_of(const unsigned int cell) const
     {
-      return gradients.data() + std::size_t(cell) * n_q_points * dofs_per_cell;
+      return gradients.data() + std::size_t(cell) * n_q_points * nodes_per_cell;
+    }
+
+    /** The number of nodes (scalar shape functions) of a cell. */
+    unsigned int
+    n_nodes_per_cell() const
+    {
+      return nodes_per_cell;
+    }
+
+    /** The vector component of each local dof. */
+    const std::vector<unsigned int> &
+    dof_components() const
+    {
+      return dof_component;
+    }
+
+    /** The node (scalar shape function) of each local dof. */
+    const std::vector<unsigned int> &
+    dof_nodes() const
+    {
+      return dof_node;
+    }
+
+    /**
+     * The gradient dd/dX at point @p q of cell @p cell of the field whose
+     * values at the cell's local dofs are @p values at @p dofs (the
+     * cell's global dofs): the sum over local dofs i, in their order, of
+     * values[dofs[i]] times the gradient of node dof_nodes()[i], into row
+     * dof_components()[i].
+     */
+    template <typename VectorType>
+    Tensor<2, dim>
+    field_gradient(const unsigned int             cell,
+                   const unsigned int             q,
+                   const VectorType              &values,
+                   const types::global_dof_index *dofs) const
+    {
+      const Tensor<1, dim> *g =
+        gradients_of(cell) + std::size_t(q) * nodes_per_cell;
+      Tensor<2, dim> gradient;
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const double value = values[dofs[i]];
+          for (unsigned int k = 0; k < dim; ++k)
+            gradient[dof_component[i]][k] += value * g[dof_node[i]][k];
+        }
+      return gradient;
     }
 
     /** Thickness times JxW at the quadrature points of cell @p cell. */
@@ -285,11 +336,13 @@ namespace ndda
 
     std::vector<CellData>     data;
     std::vector<CellGeometry> geometry;
-    /// The cells' shape gradients and weights (gradients_of(),
+    /// The cells' scalar shape gradients and weights (gradients_of(),
     /// weights_of()).
-    std::vector<Tensor<2, dim>>            gradients;
+    std::vector<Tensor<1, dim>>            gradients;
     std::vector<double>                    weights;
-    unsigned int                           dofs_per_cell = 0;
+    unsigned int                           dofs_per_cell  = 0;
+    unsigned int                           nodes_per_cell = 0;
+    std::vector<unsigned int>              dof_component, dof_node;
     std::shared_ptr<const ConstitutiveLaw> law;
     std::vector<SymmetricTensor<4, dim>>   tangents;
     std::vector<unsigned int>              computed_cells;
