@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <deal.II/base/parallel.h>
+
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria_description.h>
@@ -8,6 +10,7 @@
 #include <ndda/mesh/topology.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <fstream>
 #include <map>
@@ -629,18 +632,28 @@ namespace ndda
       return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) -
              (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
     };
-    for (const auto &t : block_mesh.triangles)
-      {
-        std::array<Point<2>, 3> now, next;
-        for (unsigned int k = 0; k < 3; ++k)
+    // On deal.II's threads: the answer does not depend on which cell a
+    // thread finds first.
+    std::atomic<bool> inverted(false);
+    parallel::apply_to_subranges(
+      std::size_t(0),
+      block_mesh.triangles.size(),
+      [&](const std::size_t begin, const std::size_t end) {
+        for (std::size_t c = begin; c < end && !inverted; ++c)
           {
-            now[k]  = block_mesh.vertices[t[k]];
-            next[k] = now[k] + displacement[t[k]];
+            const auto             &t = block_mesh.triangles[c];
+            std::array<Point<2>, 3> now, next;
+            for (unsigned int k = 0; k < 3; ++k)
+              {
+                now[k]  = block_mesh.vertices[t[k]];
+                next[k] = now[k] + displacement[t[k]];
+              }
+            if (twice_area(now) * twice_area(next) <= 0)
+              inverted = true;
           }
-        if (twice_area(now) * twice_area(next) <= 0)
-          return true;
-      }
-    return false;
+      },
+      4096);
+    return inverted;
   }
 
 

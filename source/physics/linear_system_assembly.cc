@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
+#include <deal.II/base/parallel.h>
+
 #include <ndda/physics/linear_system.h>
 
 #include <algorithm>
+#include <atomic>
 
 namespace ndda
 {
@@ -94,6 +97,7 @@ namespace ndda
             dofs_of(c);
             add_cell_rows(element_cache[c], dofs, &rows);
           }
+        prune_mass_matrix();
         return;
       }
 
@@ -108,5 +112,87 @@ namespace ndda
       }
     bolts.add_stiffness(displacement, stiffness_matrix);
     assembled = true;
+    prune_mass_matrix();
+  }
+
+
+
+  void
+  LinearSystem::prune_mass_matrix()
+  {
+    // Both patterns list a row's columns the same way (the diagonal
+    // first, then by column), so the nonzero entries of a row of
+    // mass_matrix come in the order of the pruned row: one walk along
+    // both rows per row, on deal.II's threads (each row its own).
+    const auto copy_rows = [&](const unsigned int begin,
+                               const unsigned int end) {
+      for (unsigned int r = begin; r < end; ++r)
+        {
+          auto                        target = mass_operator.begin(r);
+          const auto                  last   = mass_operator.end(r);
+          const SparseMatrix<double> &full   = mass_matrix;
+          for (auto entry = full.begin(r); entry != full.end(r); ++entry)
+            {
+              // A double, not deal.II's reference proxy, whose assignment
+              // from another proxy would copy the proxy.
+              const double value = entry->value();
+              if (value == 0.)
+                continue;
+              while (target != last && target->column() != entry->column())
+                {
+                  target->value() = 0.;
+                  ++target;
+                }
+              if (target == last)
+                return false;
+              target->value() = value;
+              ++target;
+            }
+          for (; target != last; ++target)
+            target->value() = 0.;
+        }
+      return true;
+    };
+    const unsigned int n = mass_matrix.m();
+    if (!mass_operator.empty() && mass_operator.m() == n && n > 0)
+      {
+        std::atomic<bool> fits(true);
+        parallel::apply_to_subranges(
+          0u,
+          n,
+          [&](const unsigned int begin, const unsigned int end) {
+            if (!copy_rows(begin, end))
+              fits = false;
+          },
+          4096);
+        if (fits)
+          return;
+      }
+    // A pattern of the nonzero entries (and every diagonal).
+    std::vector<unsigned int> row_length(n, 1);
+    for (unsigned int r = 0; r < n; ++r)
+      for (auto entry = mass_matrix.begin(r); entry != mass_matrix.end(r);
+           ++entry)
+        if (entry->value() != 0. && entry->column() != r)
+          ++row_length[r];
+    mass_operator.clear();
+    mass_pattern.reinit(n, n, row_length);
+    // The diagonal is stored first by the pattern itself; the others come
+    // sorted, as in mass_matrix's row.
+    std::vector<types::global_dof_index> columns;
+    for (unsigned int r = 0; r < n; ++r)
+      {
+        columns.clear();
+        for (auto entry = mass_matrix.begin(r); entry != mass_matrix.end(r);
+             ++entry)
+          if (entry->value() != 0. && entry->column() != r)
+            columns.push_back(entry->column());
+        mass_pattern.add_entries(r, columns.begin(), columns.end(), true);
+      }
+    mass_pattern.compress();
+    mass_operator.reinit(mass_pattern);
+    const bool copied = copy_rows(0, n);
+    Assert(copied, ExcInternalError());
+    (void)copied;
   }
 } // namespace ndda

@@ -204,10 +204,19 @@ namespace ndda
     void
     drop_factorization();
 
+    /**
+     * The mass matrix M, stored without the entries that are zero (those
+     * that couple a node's x and y dofs, and the contact couplings of the
+     * system's pattern): half the entries of the system's pattern for a
+     * vector element, so that a product with it reads half the memory.
+     * Each row keeps its nonzero entries in their order (the diagonal
+     * first), so that a product sums the same terms in the same order as
+     * on the full pattern, to the last bit. Kept up to date by assemble().
+     */
     const SparseMatrix<double> &
     get_mass_matrix() const
     {
-      return mass_matrix;
+      return mass_operator;
     }
 
     /** The stiffness matrix K (with the bolt springs). */
@@ -278,6 +287,15 @@ namespace ndda
                   const std::vector<types::global_dof_index> &dofs,
                   const std::vector<bool>                    *rows);
 
+    /**
+     * Copy the nonzero entries of mass_matrix into mass_operator
+     * (get_mass_matrix()): into its pattern if every nonzero entry has its
+     * place there (the others are set to zero), else into a new pattern
+     * of the nonzero entries.
+     */
+    void
+    prune_mass_matrix();
+
     /** Condense @p dsp, make it the sparsity pattern, and reinit every
      * matrix on it (their entries are zero then). */
     void
@@ -293,8 +311,11 @@ namespace ndda
     SparsityPattern                                    sparsity_pattern;
     SparseMatrix<double>                               stiffness_matrix;
     SparseMatrix<double>                               mass_matrix;
-    SparseMatrix<double>                               damping_matrix;
-    SparseMatrix<double>                               system_matrix;
+    /// The mass matrix without its zero entries (get_mass_matrix()).
+    SparsityPattern      mass_pattern;
+    SparseMatrix<double> mass_operator;
+    SparseMatrix<double> damping_matrix;
+    SparseMatrix<double> system_matrix;
     /// The system matrix condensed with the constraints' lines, once per
     /// prepare_step() that changes it.
     SparseMatrix<double> condensed_base;
