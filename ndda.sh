@@ -35,8 +35,10 @@ build_type="${NDDA_BUILD_TYPE:-Release}"
 # Debian packages ndda needs to build and test. libopenblas0-serial:
 # OpenBLAS (single-threaded), which Debian then makes the system's BLAS
 # (update-alternatives); UMFPACK's factorization runs 3-5 times faster on
-# it than on the reference BLAS (doc/performance.md).
-packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff python3 libopenblas0-serial)
+# it than on the reference BLAS (doc/performance.md). openmpi-bin: mpirun,
+# for the tests that run on two MPI processes (libdeal.ii-dev's MPI is
+# OpenMPI's).
+packages=(cmake make g++ libdeal.ii-dev libcgal-dev numdiff python3 libopenblas0-serial openmpi-bin)
 # And for ./ndda.sh validate's pictures (run with Debian's /usr/bin/python3).
 plot_packages=(python3-numpy python3-matplotlib)
 

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ndda/physics/cg_amg.h>
 #include <ndda/physics/cholesky.h>
 #include <ndda/physics/linear_solver.h>
 #include <ndda/physics/suitesparse_setup.h>
@@ -551,15 +552,7 @@ namespace ndda
   LinearSolver::set_rigid_body_modes(const std::vector<Point<2>>     &location,
                                      const std::vector<unsigned int> &component)
   {
-    const unsigned int n = location.size();
-    rigid_body_modes.assign(3 * n, 0.);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        rigid_body_modes[0 * n + i] = (component[i] == 0 ? 1. : 0.);
-        rigid_body_modes[1 * n + i] = (component[i] == 1 ? 1. : 0.);
-        rigid_body_modes[2 * n + i] =
-          (component[i] == 0 ? -location[i][1] : location[i][0]);
-      }
+    rigid_body_modes = cg_amg::rigid_body_modes(location, component);
   }
 
 
@@ -598,33 +591,11 @@ namespace ndda
           }
         impl.all = complete_index_set(matrix.m());
         impl.trilinos_matrix.reinit(matrix, 0., true, nullptr);
-        {
-          TrilinosWrappers::PreconditionAMG::AdditionalData data;
-          data.elliptic              = true;
-          data.higher_order_elements = false;
-          data.smoother_sweeps       = 2;
-          data.aggregation_threshold = 0.02;
-          if (rigid_body_modes.empty())
-            impl.amg.initialize(impl.trilinos_matrix, data);
-          else
-            {
-              // Elasticity: the null space of the stiffness holds two
-              // translations and the rotation (-y, x); deal.II's
-              // constant modes give only the translations.
-              impl.ml_parameters = Teuchos::ParameterList();
-              std::unique_ptr<Epetra_MultiVector> unused;
-              data.set_parameters(impl.ml_parameters,
-                                  unused,
-                                  impl.trilinos_matrix);
-              impl.null_space   = rigid_body_modes;
-              const int n_modes = rigid_body_modes.size() / matrix.m();
-              impl.ml_parameters.set("null space: type", "pre-computed");
-              impl.ml_parameters.set("null space: dimension", n_modes);
-              impl.ml_parameters.set("null space: vectors",
-                                     impl.null_space.data());
-              impl.amg.initialize(impl.trilinos_matrix, impl.ml_parameters);
-            }
-        }
+        impl.null_space = rigid_body_modes;
+        cg_amg::initialize(impl.amg,
+                           impl.trilinos_matrix,
+                           impl.null_space,
+                           impl.ml_parameters);
       }
     catch (const ExceptionBase &exc)
       {
@@ -742,26 +713,14 @@ namespace ndda
     for (unsigned int i = 0; i < b.size(); ++i)
       tb[i] = b[i];
     tb.compress(VectorOperation::insert);
-    unsigned int iterations = 1;
-    {
-      SolverControl control(10000, tolerance * b.l2_norm());
-      SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-      try
-        {
-          cg.solve(impl.trilinos_matrix, tx, tb, impl.amg);
-        }
-      catch (const SolverControl::NoConvergence &exc)
-        {
-          AssertThrow(false,
-                      ExcMessage("Control/Linear solver: CG-AMG did not "
-                                 "converge in " +
-                                 std::to_string(exc.last_step) +
-                                 " iterations (residual " +
-                                 std::to_string(exc.last_residual) +
-                                 "). Use UMFPACK or KLU for this scene."));
-        }
-      iterations = control.last_step();
-    }
+    const unsigned int iterations =
+      cg_amg::solve(impl.trilinos_matrix,
+                    impl.amg,
+                    tx,
+                    tb,
+                    tolerance * b.l2_norm(),
+                    "Control/Linear solver: ",
+                    " Use UMFPACK or KLU for this scene.");
     for (unsigned int i = 0; i < x.size(); ++i)
       x[i] = tx[i];
     return iterations;
