@@ -11,6 +11,45 @@ namespace ndda
 {
   namespace
   {
+    /**
+     * Copy the nonzero entries of row @p r of @p full into the same row of
+     * @p pruned, and zero the rest of it. Both patterns list a row's
+     * columns the same way (the diagonal first, then by column), so the
+     * nonzero entries come in the order of the pruned row: one walk along
+     * both rows. Returns false if the pruned row lacks a column of a
+     * nonzero entry.
+     */
+    bool
+    copy_nonzero_row(const SparseMatrix<double> &full,
+                     SparseMatrix<double>       &pruned,
+                     const unsigned int          r)
+    {
+      auto       target = pruned.begin(r);
+      const auto last   = pruned.end(r);
+      for (auto entry = full.begin(r); entry != full.end(r); ++entry)
+        {
+          // A double, not deal.II's reference proxy, whose assignment from
+          // another proxy would copy the proxy.
+          const double value = entry->value();
+          if (value == 0.)
+            continue;
+          while (target != last && target->column() != entry->column())
+            {
+              target->value() = 0.;
+              ++target;
+            }
+          if (target == last)
+            return false;
+          target->value() = value;
+          ++target;
+        }
+      for (; target != last; ++target)
+        target->value() = 0.;
+      return true;
+    }
+
+
+
     /** Set every entry of row @p row of @p matrix to zero. */
     void
     zero_row(SparseMatrix<double> &matrix, const types::global_dof_index row)
@@ -97,7 +136,15 @@ namespace ndda
             dofs_of(c);
             add_cell_rows(element_cache[c], dofs, &rows);
           }
-        prune_mass_matrix();
+        // Only those rows of the mass matrix without its zeros change,
+        // unless one of them gained an entry its pattern lacks.
+        bool fits =
+          !mass_operator.empty() && mass_operator.m() == mass_matrix.m();
+        for (types::global_dof_index r = 0; fits && r < rows.size(); ++r)
+          if (rows[r])
+            fits = copy_nonzero_row(mass_matrix, mass_operator, r);
+        if (!fits)
+          prune_mass_matrix();
         return;
       }
 
@@ -120,37 +167,13 @@ namespace ndda
   void
   LinearSystem::prune_mass_matrix()
   {
-    // Both patterns list a row's columns the same way (the diagonal
-    // first, then by column), so the nonzero entries of a row of
-    // mass_matrix come in the order of the pruned row: one walk along
-    // both rows per row, on deal.II's threads (each row its own).
+    // Row by row (copy_nonzero_row()), on deal.II's threads (each row its
+    // own).
     const auto copy_rows = [&](const unsigned int begin,
                                const unsigned int end) {
       for (unsigned int r = begin; r < end; ++r)
-        {
-          auto                        target = mass_operator.begin(r);
-          const auto                  last   = mass_operator.end(r);
-          const SparseMatrix<double> &full   = mass_matrix;
-          for (auto entry = full.begin(r); entry != full.end(r); ++entry)
-            {
-              // A double, not deal.II's reference proxy, whose assignment
-              // from another proxy would copy the proxy.
-              const double value = entry->value();
-              if (value == 0.)
-                continue;
-              while (target != last && target->column() != entry->column())
-                {
-                  target->value() = 0.;
-                  ++target;
-                }
-              if (target == last)
-                return false;
-              target->value() = value;
-              ++target;
-            }
-          for (; target != last; ++target)
-            target->value() = 0.;
-        }
+        if (!copy_nonzero_row(mass_matrix, mass_operator, r))
+          return false;
       return true;
     };
     const unsigned int n = mass_matrix.m();
