@@ -63,7 +63,11 @@ namespace ndda
     assembled = false;
     stiffness_matrix.reinit(sparsity_pattern);
     mass_matrix.reinit(sparsity_pattern);
-    damping_matrix.reinit(sparsity_pattern);
+    // The damping matrix only once a cell has viscosity (add_cell_rows()):
+    // most scenes have none, and it would be one more matrix with the
+    // whole pattern.
+    damping_matrix.clear();
+    damped = false;
     system_matrix.reinit(sparsity_pattern);
     condensed_base.reinit(sparsity_pattern);
     condensed_matrix.reinit(sparsity_pattern);

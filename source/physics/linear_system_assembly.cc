@@ -77,6 +77,8 @@ namespace ndda
         mass_matrix.add(dofs[i], n, dofs.data(), &data.mass(i, 0));
         if (data.viscosity_over_density > 0)
           {
+            if (damping_matrix.empty())
+              damping_matrix.reinit(sparsity_pattern);
             damped = true;
             for (unsigned int j = 0; j < n; ++j)
               damping_matrix.add(dofs[i],
@@ -150,8 +152,9 @@ namespace ndda
 
     stiffness_matrix = 0;
     mass_matrix      = 0;
-    damping_matrix   = 0;
-    damped           = false;
+    if (!damping_matrix.empty())
+      damping_matrix = 0;
+    damped = false;
     for (unsigned int c = 0; c < n_cells; ++c)
       {
         dofs_of(c);
