@@ -37,9 +37,11 @@ namespace ndda
    * the others, so that every process has the same split). With one
    * process it is the same code on one part.
    *
-   * The results do not depend on anything but the matrix and the number of
-   * processes. MUMPS's solution agrees with a serial direct solver to
-   * round-off (tests/distributed_solver.cc).
+   * MUMPS's solution agrees with a serial direct solver to round-off
+   * (tests/distributed_solver.cc), and CG-AMG's to its tolerance. With one
+   * process both repeat their results to the bit from run to run; MUMPS
+   * on several processes does not (its parallel factorization varies in
+   * the last bits, doc/performance.md, "MPI, first stage").
    *
    * @ingroup parallel
    */
@@ -48,14 +50,14 @@ namespace ndda
   public:
     enum class Method
     {
-      /// MUMPS (Amesos_Mumps), symmetric positive definite (LDL^T without
-      /// pivoting) or general (LU), see factorize().
+      /// MUMPS (Amesos_Mumps): its symmetric positive definite
+      /// factorization, or its general LU, see factorize().
       mumps,
       /// CG with an ML AMG preconditioner, to a relative residual.
       cg_amg
     };
 
-    /** The method's name as the .prm and the benchmarks spell it. */
+    /** The method's name, as the benchmarks print it. */
     static std::string
     name(const Method method);
 
