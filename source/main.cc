@@ -35,6 +35,11 @@ namespace
            "the results do not\n"
         << "                               depend on the number of threads "
            "(doc/design.md)\n"
+        << "  mpirun -np N ndda scene.prm  run the scene on N MPI processes; "
+           "with\n"
+        << "                               Control/Linear solver = MUMPS or "
+           "CG-AMG they\n"
+        << "                               solve the linear systems together\n"
         << "  ndda --help                  this text\n"
         << "\n"
         << "Output goes to output/<scene name>/ unless Output/Directory "
@@ -65,25 +70,29 @@ namespace
 int
 main(int argc, char **argv)
 {
+  // Every core (or DEAL_II_NUM_THREADS) unless `--threads N`, divided
+  // among the processes of this machine; the results do not depend on the
+  // number of threads (ndda/base/threads.h).
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(
+    argc, argv, dealii::numbers::invalid_unsigned_int);
+  unsigned int n_processes = 1;
+  // On several processes a failure ends them all: one that fails alone
+  // must not leave the others waiting for it.
+  const auto failed = [&n_processes]() {
+    if (n_processes > 1)
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  };
   try
     {
-      // Every core (or DEAL_II_NUM_THREADS) unless `--threads N`; the
-      // results do not depend on the number of threads (ndda/base/threads.h).
-      dealii::Utilities::MPI::MPI_InitFinalize mpi(
-        argc, argv, dealii::numbers::invalid_unsigned_int);
-      // Every process would run the whole scene and write the same output
-      // files: refuse until the distributed solver exists (issue 19).
-      const unsigned int n_processes =
-        dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      if (n_processes > 1)
+      // On several processes (mpirun -np N) every process runs the scene
+      // and they solve its systems together (Simulator, LinearSolver);
+      // only the first one speaks.
+      n_processes = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
         {
-          if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-            std::cerr << "\nndda: error: this run has " << n_processes
-                      << " MPI processes, and ndda runs a scene on one: "
-                         "each process would run the whole scene and write "
-                         "the same output files. Run it without mpirun (or "
-                         "with mpirun -np 1).\n";
-          return 1;
+          std::cout.rdbuf(nullptr);
+          std::cerr.rdbuf(nullptr);
         }
 
       std::vector<std::string> args(argv + 1, argv + argc);
@@ -164,17 +173,17 @@ main(int argc, char **argv)
       std::string message = info.str();
       message.erase(0, message.find_first_not_of(" \n\t"));
       std::cerr << "\nndda: error: " << message << std::endl;
-      return 1;
+      return failed();
     }
   catch (const std::exception &exc)
     {
       std::cerr << "\nndda: error: " << exc.what() << std::endl;
-      return 1;
+      return failed();
     }
   catch (...)
     {
       std::cerr << "\nndda: unknown error." << std::endl;
-      return 1;
+      return failed();
     }
   return 0;
 }

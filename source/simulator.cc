@@ -29,8 +29,9 @@ namespace ndda
 
 
   template <int dim>
-  Simulator<dim>::Simulator(const std::string &parameter_file)
-    : Simulator(parameters::Parameters())
+  Simulator<dim>::Simulator(const std::string &parameter_file,
+                            const MPI_Comm     communicator)
+    : Simulator(parameters::Parameters(), nullptr, communicator)
   {
     parameters.read_file(parameter_file, prm);
     parameters_from_file = true;
@@ -46,14 +47,25 @@ namespace ndda
 
   template <int dim>
   Simulator<dim>::Simulator(const parameters::Parameters &parameters,
-                            const Triangulation<dim>     *triangulation)
-    : parameters(parameters)
-    , console(std::cout.rdbuf())
-    , pcout(console, true)
+                            const Triangulation<dim>     *triangulation,
+                            const MPI_Comm                communicator)
+    : communicator(Utilities::MPI::job_supports_mpi() ? communicator :
+                                                        MPI_COMM_SELF)
+    , n_processes(Utilities::MPI::job_supports_mpi() ?
+                    Utilities::MPI::n_mpi_processes(communicator) :
+                    1)
+    , this_process(Utilities::MPI::job_supports_mpi() ?
+                     Utilities::MPI::this_mpi_process(communicator) :
+                     0)
+    , parameters(parameters)
+    // Only the first process speaks; the others' console goes nowhere.
+    , console(this_process == 0 ? std::cout.rdbuf() : nullptr)
+    , pcout(console, this_process == 0)
     , timer()
     , fem(mesh, timer)
   {
     set_up_threads();
+    fem.communicator = this->communicator;
     if (triangulation != nullptr)
       {
         user_triangulation = std::make_unique<Triangulation<dim>>();

@@ -53,7 +53,8 @@ namespace ndda
 
   template <int dim>
   std::unique_ptr<Simulator<dim>>
-  Simulator<dim>::resume(const std::string &output_directory)
+  Simulator<dim>::resume(const std::string &output_directory,
+                         const MPI_Comm     communicator)
   {
     std::error_code error;
     AssertThrow(std::filesystem::is_directory(output_directory, error),
@@ -85,7 +86,9 @@ namespace ndda
     ar.section("parameters");
     ar &text &file_name;
 
-    auto simulator = std::make_unique<Simulator<dim>>(parameters::Parameters());
+    auto simulator = std::make_unique<Simulator<dim>>(parameters::Parameters(),
+                                                      nullptr,
+                                                      communicator);
     simulator->parameters.read(text, file_name, simulator->prm);
     simulator->parameters_from_file = true;
     simulator->parameter_text       = text;
@@ -107,7 +110,20 @@ namespace ndda
                            "scene's .prm file, and this scene was not read "
                            "from one (Simulator(parameter_file))."));
     SectionTimer::Scope scope(timer, "checkpoint");
-    const std::string  &directory = parameters.output.directory;
+    // The first process writes; every process sets up anew as a resumed
+    // run would.
+    if (writes_files())
+      write_checkpoint_file();
+    rebuild_after_checkpoint();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint_file()
+  {
+    const std::string &directory = parameters.output.directory;
     std::filesystem::create_directories(directory);
     // The files hold every row up to now; the checkpoint records their
     // lengths.
@@ -137,7 +153,6 @@ namespace ndda
       ar.finish();
     }
     file.commit();
-    rebuild_after_checkpoint();
   }
 
 
@@ -286,9 +301,11 @@ namespace ndda
 
 
   template std::unique_ptr<Simulator<2>>
-  Simulator<2>::resume(const std::string &);
+  Simulator<2>::resume(const std::string &, const MPI_Comm);
   template void
   Simulator<2>::write_checkpoint();
+  template void
+  Simulator<2>::write_checkpoint_file();
   template void
   Simulator<2>::read_checkpoint_mesh();
   template void

@@ -47,6 +47,8 @@ namespace ndda
   void
   Simulator<dim>::write_statistics()
   {
+    if (!writes_files())
+      return;
     statistics.write(parameters.output.directory + "statistics");
     measure_points.write(parameters.output.directory + "measure_points.txt");
   }
@@ -64,18 +66,23 @@ namespace ndda
     // Everything is checked: only now is anything written.
     const std::string &directory = parameters.output.directory;
     std::filesystem::create_directories(directory);
-    log_file.open(directory + "log.txt", console, resumed);
-    if (resumed)
-      continue_files();
-    else if (parameters_from_file)
+    if (writes_files())
       {
-        AtomicFile used(directory + "parameters.prm");
-        prm.print_parameters(used.stream(), ParameterHandler::PRM);
-        used.commit();
+        log_file.open(directory + "log.txt", console, resumed);
+        if (resumed)
+          continue_files();
+        else if (parameters_from_file)
+          {
+            AtomicFile used(directory + "parameters.prm");
+            prm.print_parameters(used.stream(), ParameterHandler::PRM);
+            used.commit();
+          }
       }
 
     pcout << "ndda: scene '" << parameters.scene_name << "'\n"
           << fem.summary() << ", output: " << directory << std::endl;
+    if (n_processes > 1)
+      pcout << "  on " << n_processes << " MPI processes" << std::endl;
     if (resumed)
       pcout << "  resumed from " << directory << "checkpoint.ndda at step "
             << step_number << ", t = " << time << " s" << std::endl;

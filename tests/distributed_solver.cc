@@ -12,7 +12,8 @@
 //     right-hand sides with one factorization, and every process gets the
 //     same whole solution, bit for bit;
 //  3. new values on the same pattern keep the split of the rows and are
-//     solved as well;
+//     solved as well, and a new pattern (one more coupling) is split and
+//     factorized anew;
 //  4. MUMPS's general LU solves a non-symmetric matrix (the elasticity
 //     matrix plus a skew-symmetric part, as friction makes it) as UMFPACK
 //     does, to 1e-12;
@@ -180,15 +181,6 @@ namespace
   }
 
 
-  /** That every process holds exactly the first process's @p x. */
-  bool
-  same_on_every_process(const Vector<double> &x, const MPI_Comm comm)
-  {
-    Vector<double> first(x);
-    Utilities::MPI::broadcast(first.begin(), first.size(), 0, comm);
-    const double local = first == x ? 0. : 1.;
-    return Utilities::MPI::max(local, comm) == 0.;
-  }
 } // namespace
 
 
@@ -240,7 +232,7 @@ main(int argc, char **argv)
       const double difference = relative_difference(x, reference);
       diagnostics << "MUMPS SPD against CHOLMOD: " << difference << std::endl;
       check(difference <= 1e-12, "MUMPS (SPD) agrees with CHOLMOD to 1e-12");
-      check(same_on_every_process(x, comm),
+      check(ndda_tests::same_on_every_process(x, comm),
             "every process has the same solution");
     }
   out << "MUMPS (SPD): CHOLMOD's solution to 1e-12, two right-hand sides, "
@@ -261,6 +253,55 @@ main(int argc, char **argv)
           "MUMPS agrees with CHOLMOD after new values");
   }
   out << "new values on the same pattern: split kept, solved to 1e-12"
+      << std::endl;
+
+  // 3b. A new pattern (a spring between two far apart dofs, as a new
+  // contact or a crack makes one): the same solver splits and factorizes
+  // it anew.
+  {
+    DynamicSparsityPattern dsp(n, n);
+    for (unsigned int row = 0; row < n; ++row)
+      for (auto entry = system.pattern.begin(row);
+           entry != system.pattern.end(row);
+           ++entry)
+        dsp.add(row, entry->column());
+    unsigned int a = 0, b = n - 1;
+    while (system.constraints.is_constrained(a))
+      ++a;
+    while (system.constraints.is_constrained(b))
+      --b;
+    dsp.add(a, b);
+    dsp.add(b, a);
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    SparseMatrix<double> sprung(pattern);
+    for (unsigned int row = 0; row < n; ++row)
+      for (auto entry = system.matrix.begin(row);
+           entry != system.matrix.end(row);
+           ++entry)
+        sprung.set(row, entry->column(), entry->value());
+    const double k = system.matrix.diag_element(a);
+    sprung.add(a, a, k);
+    sprung.add(b, b, k);
+    sprung.add(a, b, -k);
+    sprung.add(b, a, -k);
+    mumps.factorize(sprung, true);
+    const Vector<double> reference =
+      serial_solution(parameters::LinearSolverType::direct,
+                      sprung,
+                      system.gravity);
+    Vector<double> x(n);
+    mumps.solve(x, system.gravity);
+    check(relative_difference(x, reference) <= 1e-12,
+          "MUMPS agrees with CHOLMOD on a new pattern");
+    check(
+      relative_difference(x,
+                          serial_solution(parameters::LinearSolverType::direct,
+                                          system.matrix,
+                                          system.gravity)) > 1e-9,
+      "the spring changes the solution");
+  }
+  out << "a new pattern: split and factorized anew, solved to 1e-12"
       << std::endl;
 
   // 4. A non-symmetric matrix: MUMPS's LU against UMFPACK.
@@ -313,7 +354,7 @@ main(int argc, char **argv)
     check(iterations < 60, "CG-AMG converges in fewer than 60 iterations");
     check(relative_difference(x, reference) <= 1e-9,
           "CG-AMG agrees with CHOLMOD to 1e-9");
-    check(same_on_every_process(x, comm),
+    check(ndda_tests::same_on_every_process(x, comm),
           "every process has the same CG solution");
   }
   out << "CG-AMG: relative residual 1e-12 in fewer than 60 iterations, "

@@ -122,6 +122,19 @@ namespace ndda_tests
     return parameters;
   }
 
+  /**
+   * Whether every process of @p comm holds the first process's @p values
+   * (a std::vector<double> or a dealii::Vector<double>), to the bit.
+   */
+  template <class VectorType>
+  bool
+  same_on_every_process(const VectorType &values, const MPI_Comm comm)
+  {
+    VectorType first(values);
+    dealii::Utilities::MPI::broadcast(&*first.begin(), first.size(), 0, comm);
+    return dealii::Utilities::MPI::max(first == values ? 0 : 1, comm) == 0;
+  }
+
   /** Fail the test with a message if @p condition is false. */
   inline void
   check(const bool condition, const std::string &what)

@@ -5,6 +5,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -84,7 +85,8 @@ namespace ndda
     /**
      * Read the scene from a `.prm` file. Nothing is built yet.
      */
-    explicit Simulator(const std::string &parameter_file);
+    explicit Simulator(const std::string &parameter_file,
+                       const MPI_Comm     communicator = MPI_COMM_WORLD);
 
     /**
      * A scene from parameters that were already read; if @p triangulation
@@ -92,7 +94,8 @@ namespace ndda
      * id, see CrackableMesh::build()).
      */
     Simulator(const parameters::Parameters &parameters,
-              const Triangulation<dim>     *triangulation = nullptr);
+              const Triangulation<dim>     *triangulation = nullptr,
+              const MPI_Comm                communicator  = MPI_COMM_WORLD);
 
     ~Simulator();
 
@@ -106,7 +109,8 @@ namespace ndda
      * interrupted, bit for bit (doc/design.md, "Decisions": checkpoints).
      */
     static std::unique_ptr<Simulator<dim>>
-    resume(const std::string &directory);
+    resume(const std::string &directory,
+           const MPI_Comm     communicator = MPI_COMM_WORLD);
 
     /**
      * Write the present state to `checkpoint.ndda` in the output directory
@@ -144,6 +148,25 @@ namespace ndda
 
     /** @name Access for tests, benchmarks and postprocessing */
     /** @{ */
+    /** The processes that run the scene together. */
+    MPI_Comm
+    get_communicator() const
+    {
+      return communicator;
+    }
+
+    /**
+     * Whether this process writes the run's files (statistics, measure
+     * points, log, checkpoints, crack files, the frames' collections) and
+     * its console output: the first process of the communicator. Every
+     * process writes its piece of each frame.
+     */
+    bool
+    writes_files() const
+    {
+      return this_process == 0;
+    }
+
     const parameters::Parameters &
     get_parameters() const
     {
@@ -611,6 +634,15 @@ namespace ndda
     output_results();
     void
     write_statistics();
+    /** The checkpoint file (the first process's part of write_checkpoint()). */
+    void
+    write_checkpoint_file();
+
+    /// The processes that run the scene (Simulator(): MPI_COMM_SELF in a
+    /// program without MPI), their number and this one's rank.
+    MPI_Comm     communicator;
+    unsigned int n_processes;
+    unsigned int this_process;
 
     parameters::Parameters              parameters;
     ParameterHandler                    prm;

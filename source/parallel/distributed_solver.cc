@@ -10,6 +10,7 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_LinearProblem.h>
 #include <Teuchos_ParameterList.hpp>
 #include <cstdint>
@@ -41,6 +42,39 @@ namespace ndda
         }
       return hash;
     }
+
+
+
+    /**
+     * The flops of MUMPS's factorization (RINFOG(3), from its analysis)
+     * over those of a solve with its factors (INFOG(20) entries, twice
+     * for the symmetric factorization, which stores one triangle) and a
+     * product with the matrix (@p n_nonzeros entries): the cost of a
+     * factorization in GMRES iterations, as LinearSolver's serial
+     * factorizations count it. MUMPS defines its global counts on the
+     * first process; the ratio is sent to all.
+     */
+    double
+    mumps_solve_ratio(Amesos_BaseSolver &solver,
+                      const std::size_t  n_nonzeros,
+                      const bool         symmetric,
+                      const MPI_Comm     communicator)
+    {
+      double ratio = 0;
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+        if (auto *mumps = dynamic_cast<Amesos_Mumps *>(&solver))
+          {
+            const double flops = mumps->GetRINFOG()[2];
+            const int    count = mumps->GetINFOG()[19];
+            // A negative count is in millions.
+            const double entries =
+              count >= 0 ? count : -1e6 * static_cast<double>(count);
+            const double multiply_adds =
+              (symmetric ? 2. : 1.) * entries + n_nonzeros;
+            ratio = multiply_adds > 0. ? flops / (2. * multiply_adds) : 0.;
+          }
+      return dealii::Utilities::MPI::broadcast(communicator, ratio, 0);
+    }
   } // namespace
 
 
@@ -60,6 +94,8 @@ namespace ndda
     std::unique_ptr<Amesos_BaseSolver>    mumps;
     /// Whether MUMPS was told the matrix is symmetric positive definite.
     bool mumps_symmetric = false;
+    /// MUMPS's factorization flops over those of a solve and a product.
+    double solve_ratio = 0;
 
     /// CG-AMG: the preconditioner, and the rigid-body modes of this
     /// process's rows, column after column (ML keeps a pointer to them).
@@ -111,14 +147,39 @@ namespace ndda
 
 
 
+  std::size_t
+  DistributedSolver::size() const
+  {
+    return implementation->split_made ? implementation->owned.size() : 0;
+  }
+
+
+
+  double
+  DistributedSolver::solves_per_factorization() const
+  {
+    return method == Method::mumps ? implementation->solve_ratio : 0.;
+  }
+
+
+
+  void
+  DistributedSolver::forget_factorization()
+  {
+    implementation = std::make_unique<Implementation>();
+  }
+
+
+
   void
   DistributedSolver::factorize(const SparseMatrix<double> &matrix,
                                const bool symmetric_positive_definite)
   {
-    auto              &impl    = *implementation;
-    const unsigned int n_parts = Utilities::MPI::n_mpi_processes(communicator);
+    auto              &impl = *implementation;
+    const unsigned int n_parts =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
     const unsigned int this_part =
-      Utilities::MPI::this_mpi_process(communicator);
+      dealii::Utilities::MPI::this_mpi_process(communicator);
     const SparsityPattern &pattern = matrix.get_sparsity_pattern();
 
     // A new pattern: a new split of the rows (METIS on the first process,
@@ -132,6 +193,10 @@ namespace ndda
       impl.split_made && print == impl.pattern_fingerprint;
     if (!same_pattern)
       {
+        // MUMPS's instance refers to the distributed matrix (its
+        // destructor reads it): it goes first.
+        impl.mumps.reset();
+        impl.problem.reset();
         std::vector<unsigned int> part(matrix.m(), 0);
         if (n_parts > 1)
           {
@@ -140,10 +205,10 @@ namespace ndda
                                        n_parts,
                                        part,
                                        SparsityTools::Partitioner::metis);
-            Utilities::MPI::broadcast(part.data(),
-                                      part.size(),
-                                      0,
-                                      communicator);
+            dealii::Utilities::MPI::broadcast(part.data(),
+                                              part.size(),
+                                              0,
+                                              communicator);
           }
         impl.owned = IndexSet(matrix.m());
         for (unsigned int i = 0; i < matrix.m(); ++i)
@@ -221,6 +286,10 @@ namespace ndda
                       impl.mumps->NumericFactorization() == 0,
                     ExcMessage("MUMPS could not factorize the system matrix; "
                                "it is probably singular."));
+        impl.solve_ratio = mumps_solve_ratio(*impl.mumps,
+                                             matrix.n_nonzero_elements(),
+                                             symmetric_positive_definite,
+                                             communicator);
         return;
       }
 
@@ -276,8 +345,13 @@ namespace ndda
       }
     else
       {
-        iterations = cg_amg::solve(
-          impl.matrix, impl.amg, tx, tb, tolerance * b.l2_norm(), "", "");
+        iterations = cg_amg::solve(impl.matrix,
+                                   impl.amg,
+                                   tx,
+                                   tb,
+                                   tolerance * b.l2_norm(),
+                                   "Control/Linear solver: ",
+                                   " Use direct or MUMPS for this scene.");
       }
     x = tx; // every process gets the whole solution
     return iterations;

@@ -314,7 +314,7 @@ namespace ndda
         prm.declare_entry(
           "Linear solver",
           "direct",
-          Patterns::Selection("UMFPACK|direct|KLU|CG-AMG"),
+          Patterns::Selection("UMFPACK|direct|KLU|CG-AMG|MUMPS"),
           "direct: sparse Cholesky (CHOLMOD, supernodal) where the system "
           "matrix is symmetric positive definite (elasticity, inertia, "
           "contact springs, constraints), UMFPACK's LU where it is not "
@@ -324,7 +324,13 @@ namespace ndda
           "multifrontal, for every system; KLU: sparse direct, "
           "SuiteSparse's KLU (little overhead per factorization, keeps "
           "the pivot order between contact iterations; best for many "
-          "small blocks); CG-AMG: Trilinos CG with ML AMG.");
+          "small blocks); CG-AMG: Trilinos CG with ML AMG; MUMPS: the "
+          "parallel sparse direct solver MUMPS (through Trilinos' Amesos; "
+          "its symmetric factorization where the matrix is symmetric, LU "
+          "where it is not). On several MPI processes (mpirun -np N), "
+          "MUMPS and CG-AMG solve with all of them; direct, UMFPACK and "
+          "KLU solve the whole system on each process, which repeats the "
+          "run on one process to the bit.");
         prm.declare_entry("Solver tolerance",
                           "1e-10",
                           Patterns::Double(0.),
@@ -413,6 +419,7 @@ namespace ndda
       linear_solver     = ls == "direct"  ? LinearSolverType::direct :
                           ls == "UMFPACK" ? LinearSolverType::umfpack :
                           ls == "KLU"     ? LinearSolverType::klu :
+                          ls == "MUMPS"   ? LinearSolverType::mumps :
                                             LinearSolverType::cg_amg;
       solver_tolerance  = prm.get_double("Solver tolerance");
       constraint_method = prm.get("Constraint method") == "exact" ?

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ndda/parallel/distributed_solver.h>
 #include <ndda/physics/cg_amg.h>
 #include <ndda/physics/cholesky.h>
 #include <ndda/physics/linear_solver.h>
@@ -21,6 +22,8 @@
 #include <memory>
 #include <suitesparse/klu.h>
 #include <suitesparse/umfpack.h>
+
+#include "reuse_gmres.h"
 
 namespace ndda
 {
@@ -285,227 +288,6 @@ namespace ndda
     };
 
 
-    /**
-     * GMRES's control with an earlier factorization: it fails at
-     * @p max_steps iterations, and after @p sure_steps iterations also as
-     * soon as the reduction of the residual so far, extrapolated at its
-     * mean rate, would not reach the tolerance within @p max_steps: such
-     * a solve costs more than the factorization it was to save.
-     */
-    class ReuseControl : public SolverControl
-    {
-    public:
-      ReuseControl()
-        : SolverControl(1, 0., false, false)
-      {}
-
-      /** Set up for the next solve (the control is kept from solve to
-       * solve, with the GMRES solvers that refer to it). */
-      void
-      reset(const unsigned int max_steps,
-            const unsigned int sure_steps,
-            const double       tolerance,
-            const double       initial)
-      {
-        set_max_steps(max_steps);
-        set_tolerance(tolerance * initial);
-        this->sure_steps = sure_steps;
-        this->initial    = initial;
-        log_target       = std::log(tolerance);
-      }
-
-      State
-      check(const unsigned int step, const double value) override
-      {
-        const State state = SolverControl::check(step, value);
-        if (state != iterate || step < sure_steps)
-          return state;
-        const double log_reduction = std::log(value / initial);
-        if (!(log_reduction < 0.) ||
-            step * log_target / log_reduction > max_steps())
-          {
-            lcheck = failure;
-            return failure;
-          }
-        return state;
-      }
-
-    private:
-      unsigned int sure_steps = 0;
-      double       initial = 1, log_target = 0;
-    };
-
-
-
-    /**
-     * GMRES with right preconditioning and the true residual's estimate
-     * as criterion, one cycle of at most @p basis_size - 2 iterations:
-     * the operations of deal.II's SolverGMRES (9.4) in that case, in the
-     * same order and with the same vector operations, so that it gives
-     * the same iterate to the last bit (the tests' figures did not move).
-     * Unlike SolverGMRES it keeps its basis, Hessenberg matrix and Givens
-     * rotations from solve to solve: SolverGMRES allocates them at every
-     * call, which cost a single block's step more than its iterations
-     * (about 20,000 instructions a solve of three unknowns).
-     */
-    class ReuseGMRES
-    {
-    public:
-      /**
-       * Solve A x = b from the x given, preconditioned by @p preconditioner;
-       * @p control decides. Returns whether it converged (if not, x is
-       * left as it was).
-       */
-      template <class Preconditioner>
-      bool
-      solve(const SparseMatrix<double> &A,
-            Vector<double>             &x,
-            const Vector<double>       &b,
-            const Preconditioner       &preconditioner,
-            SolverControl              &control,
-            const unsigned int          basis_size)
-      {
-        // The basis vectors are sized when an iteration first needs them
-        // (empty vectors hold no memory): a large system that converges in
-        // a few iterations does not hold a hundred of its vectors.
-        const unsigned int n_tmp = std::max(basis_size, 3u);
-        if (basis.size() < n_tmp - 1)
-          basis.resize(n_tmp - 1);
-        const auto sized = [&](Vector<double> &vector) -> Vector<double> & {
-          if (vector.size() != x.size())
-            vector.reinit(x.size());
-          return vector;
-        };
-        H.resize(n_tmp * (n_tmp - 1));
-        gamma.assign(n_tmp, 0.);
-        ci.resize(n_tmp - 1);
-        si.resize(n_tmp - 1);
-        h.assign(n_tmp - 1, 0.);
-        const auto H_at = [&](const unsigned int i,
-                              const unsigned int j) -> double & {
-          return H[i * (n_tmp - 1) + j];
-        };
-
-        Vector<double> &v = sized(basis[0]);
-        sized(p);
-        A.vmult(v, x);
-        v.sadd(-1., 1., b);
-        double       rho   = v.l2_norm();
-        auto         state = control.check(0, rho);
-        unsigned int dim   = 0;
-        if (state == SolverControl::iterate)
-          {
-            gamma[0] = rho;
-            v *= 1. / rho;
-            bool re_orthogonalize = false;
-            for (unsigned int inner = 0;
-                 inner < n_tmp - 2 && state == SolverControl::iterate;
-                 ++inner)
-              {
-                Vector<double> &vv = sized(basis[inner + 1]);
-                preconditioner.vmult(p, basis[inner]);
-                A.vmult(vv, p);
-                dim            = inner + 1;
-                const double s = orthogonalize(dim, vv, re_orthogonalize);
-                h[inner + 1]   = s;
-                if (s != 0)
-                  vv *= 1. / s;
-                givens_rotation(inner);
-                for (unsigned int i = 0; i < dim; ++i)
-                  H_at(i, inner) = h[i];
-                rho   = std::fabs(gamma[dim]);
-                state = control.check(dim, rho);
-              }
-          }
-        if (state != SolverControl::success)
-          return false;
-        if (dim == 0)
-          return true;
-        // Back substitution with the rotated Hessenberg matrix, and the
-        // update x += P^-1 V y.
-        y.resize(dim);
-        for (int i = dim - 1; i >= 0; --i)
-          {
-            double sum = gamma[i];
-            for (unsigned int j = i + 1; j < dim; ++j)
-              sum -= y[j] * H_at(i, j);
-            y[i] = sum / H_at(i, i);
-          }
-        p = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
-          p.add(y[i], basis[i]);
-        preconditioner.vmult(v, p);
-        x.add(1., v);
-        return true;
-      }
-
-    private:
-      /** Modified Gram-Schmidt of @p vv against the first @p dim basis
-       * vectors into h, with a second pass once orthogonality is lost
-       * (checked every fifth iteration); returns the norm left. */
-      double
-      orthogonalize(const unsigned int dim,
-                    Vector<double>    &vv,
-                    bool              &re_orthogonalize)
-      {
-        const unsigned int inner         = dim - 1;
-        double             norm_vv_start = 0;
-        const bool         consider      = !re_orthogonalize && inner % 5 == 4;
-        if (consider)
-          norm_vv_start = vv.l2_norm();
-        h[0] = vv * basis[0];
-        for (unsigned int i = 1; i < dim; ++i)
-          h[i] = vv.add_and_dot(-h[i - 1], basis[i - 1], basis[i]);
-        double norm_vv =
-          std::sqrt(vv.add_and_dot(-h[dim - 1], basis[dim - 1], vv));
-        if (consider)
-          {
-            if (norm_vv > 10. * norm_vv_start *
-                            std::sqrt(std::numeric_limits<double>::epsilon()))
-              return norm_vv;
-            re_orthogonalize = true;
-          }
-        if (re_orthogonalize)
-          {
-            double step = vv * basis[0];
-            h[0] += step;
-            for (unsigned int i = 1; i < dim; ++i)
-              {
-                step = vv.add_and_dot(-step, basis[i - 1], basis[i]);
-                h[i] += step;
-              }
-            norm_vv = std::sqrt(vv.add_and_dot(-step, basis[dim - 1], vv));
-          }
-        return norm_vv;
-      }
-
-      /** Apply the earlier rotations to column @p col of the Hessenberg
-       * matrix (in h), and a new one that zeroes its subdiagonal entry. */
-      void
-      givens_rotation(const unsigned int col)
-      {
-        for (unsigned int i = 0; i < col; ++i)
-          {
-            const double s = si[i], c = ci[i], old = h[i];
-            h[i]     = c * old + s * h[i + 1];
-            h[i + 1] = -s * old + c * h[i + 1];
-          }
-        const double r =
-          1. / std::sqrt(h[col] * h[col] + h[col + 1] * h[col + 1]);
-        si[col]        = h[col + 1] * r;
-        ci[col]        = h[col] * r;
-        h[col]         = ci[col] * h[col] + si[col] * h[col + 1];
-        gamma[col + 1] = -si[col] * gamma[col];
-        gamma[col] *= ci[col];
-      }
-
-      /// The Krylov basis, and the work vector p = P^-1 v.
-      std::vector<Vector<double>> basis;
-      Vector<double>              p;
-      /// The rotated Hessenberg matrix by rows, its present column, the
-      /// rotated right-hand side, the rotations and the coefficients.
-      std::vector<double> H, h, gamma, ci, si, y;
-    };
   } // namespace
 
 
@@ -527,19 +309,36 @@ namespace ndda
     Teuchos::ParameterList ml_parameters;
     /// GMRES with an earlier factorization: its control and its storage,
     /// kept from solve to solve.
-    ReuseControl reuse_control;
-    ReuseGMRES   gmres;
+    internal::ReuseControl reuse_control;
+    internal::ReuseGMRES   gmres;
   };
 
 
 
   LinearSolver::LinearSolver(const parameters::LinearSolverType type,
-                             const double                       tolerance)
+                             const double                       tolerance,
+                             const MPI_Comm                     communicator)
     : type(type)
     , tolerance(tolerance)
     , implementation(std::make_unique<Implementation>())
   {
     set_up_suitesparse();
+    // The serial solvers stay serial on several processes: every process
+    // factorizes the same matrix alike, so that a run repeats the run on
+    // one process to the bit.
+    const unsigned int n_processes =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(communicator) :
+        1;
+    if (type == parameters::LinearSolverType::mumps)
+      distributed =
+        std::make_unique<DistributedSolver>(communicator,
+                                            DistributedSolver::Method::mumps);
+    else if (n_processes > 1 && type == parameters::LinearSolverType::cg_amg)
+      distributed =
+        std::make_unique<DistributedSolver>(communicator,
+                                            DistributedSolver::Method::cg_amg,
+                                            tolerance);
   }
 
 
@@ -553,6 +352,8 @@ namespace ndda
                                      const std::vector<unsigned int> &component)
   {
     rigid_body_modes = cg_amg::rigid_body_modes(location, component);
+    if (distributed != nullptr)
+      distributed->set_rigid_body_modes(location, component);
   }
 
 
@@ -561,6 +362,8 @@ namespace ndda
   LinearSolver::forget_factorization()
   {
     implementation = std::make_unique<Implementation>();
+    if (distributed != nullptr)
+      distributed->forget_factorization();
   }
 
 
@@ -572,6 +375,24 @@ namespace ndda
     auto &impl = *implementation;
     try
       {
+        if (distributed != nullptr)
+          {
+            // MUMPS's symmetric factorization where the matrix is
+            // symmetric; its LU where it is not, or where the symmetric one
+            // fails.
+            const bool symmetric = is_symmetric(matrix);
+            try
+              {
+                distributed->factorize(matrix, symmetric);
+              }
+            catch (const ExceptionBase &)
+              {
+                if (!symmetric)
+                  throw;
+                distributed->factorize(matrix, false);
+              }
+            return;
+          }
         if (type == parameters::LinearSolverType::direct)
           {
             impl.cholesky_active = impl.cholesky.factorize(matrix);
@@ -617,6 +438,8 @@ namespace ndda
   double
   LinearSolver::solves_per_factorization() const
   {
+    if (distributed != nullptr)
+      return distributed->solves_per_factorization();
     if (type == parameters::LinearSolverType::direct)
       return implementation->cholesky_active ?
                implementation->cholesky.solves_per_factorization() :
@@ -649,6 +472,8 @@ namespace ndda
     const unsigned int          min_iterations,
     const double                tolerance)
   {
+    if (distributed != nullptr)
+      return distributed_reuse(matrix, x, b, min_iterations, tolerance);
     auto      &impl = *implementation;
     const bool cholesky =
       type == parameters::LinearSolverType::direct && impl.cholesky_active;
@@ -687,8 +512,52 @@ namespace ndda
 
 
   unsigned int
+  LinearSolver::distributed_reuse(const SparseMatrix<double> &matrix,
+                                  Vector<double>             &x,
+                                  const Vector<double>       &b,
+                                  const unsigned int          min_iterations,
+                                  const double                tolerance)
+  {
+    // As with the serial factorizations: GMRES on the whole vectors,
+    // which every process holds alike, preconditioned by the processes'
+    // solve with the earlier factorization (collective: every process
+    // takes the same iterations, since it computes the same numbers).
+    struct Preconditioner
+    {
+      void
+      vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        solver->solve(dst, src);
+      }
+      DistributedSolver *solver;
+    };
+    if (min_iterations == 0 || distributed->size() != matrix.m() ||
+        solves_per_factorization() == 0.)
+      return 0;
+    x.reinit(b.size());
+    const double norm = b.l2_norm();
+    if (norm == 0.)
+      return 1;
+    auto              &impl           = *implementation;
+    const unsigned int max_iterations = reuse_limit(min_iterations);
+    impl.reuse_control.reset(max_iterations, min_iterations, tolerance, norm);
+    if (!impl.gmres.solve(matrix,
+                          x,
+                          b,
+                          Preconditioner{distributed.get()},
+                          impl.reuse_control,
+                          max_iterations + 2))
+      return 0;
+    return std::max(1u, impl.reuse_control.last_step());
+  }
+
+
+
+  unsigned int
   LinearSolver::solve(Vector<double> &x, const Vector<double> &b)
   {
+    if (distributed != nullptr)
+      return distributed->solve(x, b);
     auto &impl = *implementation;
     if (type == parameters::LinearSolverType::direct)
       {

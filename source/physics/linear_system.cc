@@ -31,10 +31,12 @@ namespace ndda
   void
   LinearSystem::initialize(const parameters::LinearSolverType type,
                            const double                       tolerance,
-                           SectionTimer                      *timer)
+                           SectionTimer                      *timer,
+                           const MPI_Comm                     communicator)
   {
-    this->timer   = timer;
-    linear_solver = std::make_unique<LinearSolver>(type, tolerance);
+    this->timer = timer;
+    linear_solver =
+      std::make_unique<LinearSolver>(type, tolerance, communicator);
   }
 
 

@@ -224,7 +224,8 @@ namespace ndda
         frame.data_out.add_data_vector(crack_faces,
                                        "crack_faces",
                                        DataOut<2>::type_cell_data);
-        if (!frame.write_vtu || block_mesh.crack_edges.empty())
+        if (!frame.write_vtu || block_mesh.crack_edges.empty() ||
+            !simulator.writes_files())
           return;
         AtomicFile file(frame.directory + "cracks-" +
                         Utilities::int_to_string(frame.number, 5) + ".txt");

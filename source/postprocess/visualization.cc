@@ -8,6 +8,7 @@
 #include <ndda/postprocess/visualization.h>
 #include <ndda/simulator.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 
@@ -16,6 +17,44 @@ namespace ndda
   namespace postprocess
   {
     using namespace dealii;
+
+    namespace
+    {
+      /**
+       * Let @p data_out build the patches of piece @p piece of @p n_pieces
+       * only: the active cells whose index c has c * n_pieces / n_cells ==
+       * piece, contiguous ranges of about the same size.
+       */
+      void
+      select_cells(DataOut<2>        &data_out,
+                   const unsigned int piece,
+                   const unsigned int n_pieces)
+      {
+        using cell_iterator = DataOut<2>::cell_iterator;
+        const auto mine     = [piece, n_pieces](const Triangulation<2> &tria,
+                                            const cell_iterator    &cell) {
+          return static_cast<std::uint64_t>(cell->active_cell_index()) *
+                   n_pieces / tria.n_active_cells() ==
+                 piece;
+        };
+        const auto next_mine = [mine](const Triangulation<2> &tria,
+                                      cell_iterator           cell) {
+          while (cell != tria.end() && !mine(tria, cell))
+            cell = static_cast<cell_iterator>(
+              std::next(Triangulation<2>::active_cell_iterator(cell)));
+          return cell;
+        };
+        data_out.set_cell_selection(
+          [next_mine](const Triangulation<2> &tria) {
+            return next_mine(tria, cell_iterator(tria.begin_active()));
+          },
+          [next_mine](const Triangulation<2> &tria, const cell_iterator &cell) {
+            return next_mine(tria,
+                             cell_iterator(std::next(
+                               Triangulation<2>::active_cell_iterator(cell))));
+          });
+      }
+    } // namespace
 
     void
     VisualizationWriter::write_frame(
@@ -30,6 +69,18 @@ namespace ndda
       DataOut<2> data_out;
       Frame frame(data_out, output_number, output.write_vtu, output.directory);
       data_out.attach_dof_handler(simulator.get_dof_handler());
+      // On several processes each writes the patches of its share of the
+      // cells (a range of active cell indices), and the first process
+      // the records that name the pieces.
+      const MPI_Comm     communicator = simulator.get_communicator();
+      const unsigned int n_pieces =
+        Utilities::MPI::job_supports_mpi() ?
+          Utilities::MPI::n_mpi_processes(communicator) :
+          1;
+      const unsigned int piece =
+        n_pieces > 1 ? Utilities::MPI::this_mpi_process(communicator) : 0;
+      if (n_pieces > 1)
+        select_cells(data_out, piece, n_pieces);
       for (const auto &postprocessor : postprocessors)
         postprocessor->add_fields(simulator, frame);
       data_out.build_patches(simulator.get_mapping(),
@@ -40,7 +91,36 @@ namespace ndda
 
       const double      time   = simulator.get_time();
       const std::string number = Utilities::int_to_string(output_number, 5);
-      if (output.write_vtu)
+      if (output.write_vtu && n_pieces > 1)
+        {
+          const auto piece_name = [&](const unsigned int p) {
+            return "solution-" + number + "." +
+                   Utilities::int_to_string(p,
+                                            Utilities::needed_digits(n_pieces -
+                                                                     1)) +
+                   ".vtu";
+          };
+          AtomicFile vtu(output.directory + piece_name(piece));
+          data_out.write_vtu(vtu.stream());
+          vtu.commit();
+          // The record after every piece is there.
+          MPI_Barrier(communicator);
+          if (simulator.writes_files())
+            {
+              std::vector<std::string> pieces;
+              for (unsigned int p = 0; p < n_pieces; ++p)
+                pieces.push_back(piece_name(p));
+              const std::string name = "solution-" + number + ".pvtu";
+              AtomicFile        pvtu(output.directory + name);
+              data_out.write_pvtu_record(pvtu.stream(), pieces);
+              pvtu.commit();
+              pvd_records.emplace_back(time, name);
+              AtomicFile pvd(output.directory + "solution.pvd");
+              DataOutBase::write_pvd_record(pvd.stream(), pvd_records);
+              pvd.commit();
+            }
+        }
+      else if (output.write_vtu)
         {
           const std::string name = "solution-" + number + ".vtu";
           // Each file appears complete or not at all (AtomicFile): the
@@ -65,16 +145,21 @@ namespace ndda
                         ExcMessage("Cannot rename " + file + ".tmp to " +
                                    file));
           };
+          // One file from all processes (parallel HDF5), collectively.
+          const MPI_Comm hdf5_communicator =
+            n_pieces > 1 ? communicator : MPI_COMM_SELF;
           data_out.write_hdf5_parallel(filter,
                                        output.directory + name + ".tmp",
-                                       MPI_COMM_SELF);
-          written(output.directory + name);
+                                       hdf5_communicator);
+          if (simulator.writes_files())
+            written(output.directory + name);
           xdmf_entries.push_back(
-            data_out.create_xdmf_entry(filter, name, time, MPI_COMM_SELF));
+            data_out.create_xdmf_entry(filter, name, time, hdf5_communicator));
           data_out.write_xdmf_file(xdmf_entries,
                                    output.directory + "solution.xdmf.tmp",
-                                   MPI_COMM_SELF);
-          written(output.directory + "solution.xdmf");
+                                   hdf5_communicator);
+          if (simulator.writes_files())
+            written(output.directory + "solution.xdmf");
         }
       ++output_number;
     }

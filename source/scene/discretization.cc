@@ -64,7 +64,8 @@ namespace ndda
                           parameters.materials.thickness;
       linear_system.initialize(parameters.control.linear_solver,
                                parameters.control.solver_tolerance,
-                               &timer);
+                               &timer,
+                               communicator);
     }
 
 

@@ -104,6 +104,23 @@ namespace ndda
     const IndexSet &
     locally_owned_rows() const;
 
+    /** The size of the factorized matrix, 0 before factorize(). */
+    std::size_t
+    size() const;
+
+    /**
+     * The cost of MUMPS's last factorization in solves (its flops over
+     * those of one solve with its factors and one product with the
+     * matrix), the same on every process; 0 for CG-AMG.
+     */
+    double
+    solves_per_factorization() const;
+
+    /** Forget the split and the factorization: the next factorize() starts
+     * anew. */
+    void
+    forget_factorization();
+
   private:
     struct Implementation;
 

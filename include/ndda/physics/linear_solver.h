@@ -2,6 +2,7 @@
 #ifndef ndda_physics_linear_solver_h
 #define ndda_physics_linear_solver_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
 #include <deal.II/lac/sparse_matrix.h>
@@ -15,6 +16,8 @@ namespace ndda
 {
   using namespace dealii;
 
+  class DistributedSolver;
+
   /**
    * The one place where the linear algebra back end is chosen (DESIGN.md
    * decision 1). The system matrix is assembled as a deal.II SparseMatrix;
@@ -23,13 +26,22 @@ namespace ndda
    * number of times with new right-hand sides. A scene whose matrix does
    * not change pays for one factorization only.
    *
+   * MUMPS and, on a @p communicator of more than one process
+   * (`mpirun -np N`), CG-AMG are solved by the processes of @p communicator
+   * together (DistributedSolver), each holding the same matrix and
+   * right-hand side. The serial solvers (direct, UMFPACK, KLU) stay
+   * serial: every process factorizes the whole matrix alike, so that a run
+   * on several processes repeats the run on one to the bit. Every process
+   * gets the same solution, to the bit.
+   *
    * @ingroup physics
    */
   class LinearSolver
   {
   public:
     LinearSolver(const parameters::LinearSolverType type,
-                 const double                       tolerance);
+                 const double                       tolerance,
+                 const MPI_Comm communicator = MPI_COMM_SELF);
     ~LinearSolver();
 
     /**
@@ -115,10 +127,20 @@ namespace ndda
     }
 
   private:
+    /** solve_with_earlier_factorization() with the DistributedSolver. */
+    unsigned int
+    distributed_reuse(const SparseMatrix<double> &matrix,
+                      Vector<double>             &x,
+                      const Vector<double>       &b,
+                      const unsigned int          min_iterations,
+                      const double                tolerance);
+
     struct Implementation;
     const parameters::LinearSolverType type;
     const double                       tolerance;
     std::unique_ptr<Implementation>    implementation;
+    /// The solver of several processes, or of MUMPS (else null).
+    std::unique_ptr<DistributedSolver> distributed;
     std::vector<double>                rigid_body_modes;
     unsigned int                       factorization_count = 0;
   };

@@ -68,12 +68,14 @@ namespace ndda
 
     /**
      * A new linear solver of type @p type; with @p timer, the assembly and
-     * the solves are timed in it.
+     * the solves are timed in it. The processes of @p communicator solve
+     * together (LinearSolver).
      */
     void
     initialize(const parameters::LinearSolverType type,
                const double                       tolerance,
-               SectionTimer                      *timer = nullptr);
+               SectionTimer                      *timer        = nullptr,
+               const MPI_Comm                     communicator = MPI_COMM_SELF);
 
     LinearSolver &
     get_linear_solver()

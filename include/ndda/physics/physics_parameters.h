@@ -37,7 +37,9 @@ namespace ndda
       direct,
       umfpack,
       klu,
-      cg_amg
+      cg_amg,
+      /// MUMPS (through Trilinos' Amesos) on the processes of the run.
+      mumps
     };
 
     enum class ConstraintMethod

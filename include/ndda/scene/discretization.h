@@ -248,6 +248,9 @@ namespace ndda
       /// What the blocks' finite rotation needs of the nodes, made with
       /// the mass matrix (assemble()).
       BlockNodes block_nodes;
+      /// The processes that solve the linear systems together (the
+      /// Simulator's; one process unless it was given more).
+      MPI_Comm communicator = MPI_COMM_SELF;
 
     private:
       SectionTimer &timer;
