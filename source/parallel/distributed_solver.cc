@@ -11,7 +11,10 @@
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
 #include <Amesos_Mumps.h>
+#include <Epetra_Import.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_LocalMap.h>
+#include <Epetra_Vector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <cstdint>
 
@@ -88,6 +91,14 @@ namespace ndda
     bool          split_made          = false;
 
     TrilinosWrappers::SparseMatrix matrix;
+    /// The solution and right-hand side in this process's rows, and the
+    /// import that gathers the whole solution on every process, made with
+    /// the split (Epetra builds an import with a collective directory
+    /// lookup: once per split, not once per solve).
+    TrilinosWrappers::MPI::Vector  x, b;
+    std::unique_ptr<Epetra_Map>    all;
+    std::unique_ptr<Epetra_Import> gather;
+    std::unique_ptr<Epetra_Vector> gathered;
 
     /// MUMPS through Amesos.
     std::unique_ptr<Epetra_LinearProblem> problem;
@@ -232,6 +243,15 @@ namespace ndda
           }
         distributed_pattern.compress();
         impl.matrix.reinit(distributed_pattern);
+        impl.x.reinit(impl.owned, communicator);
+        impl.b.reinit(impl.owned, communicator);
+        const Epetra_BlockMap &owned_map = impl.x.trilinos_vector().Map();
+        impl.all =
+          std::make_unique<Epetra_LocalMap>(static_cast<int>(matrix.m()),
+                                            0,
+                                            owned_map.Comm());
+        impl.gather   = std::make_unique<Epetra_Import>(*impl.all, owned_map);
+        impl.gathered = std::make_unique<Epetra_Vector>(*impl.all);
         impl.pattern_fingerprint = print;
         impl.split_made          = true;
       }
@@ -327,8 +347,8 @@ namespace ndda
     AssertThrow(impl.split_made && b.size() == impl.owned.size(),
                 ExcMessage("DistributedSolver::solve() before factorize(), "
                            "or with a vector of another size."));
-    TrilinosWrappers::MPI::Vector tx(impl.owned, communicator),
-      tb(impl.owned, communicator);
+    TrilinosWrappers::MPI::Vector &tx = impl.x, &tb = impl.b;
+    tx = 0.;
     {
       double *local = tb.begin();
       for (const auto row : impl.owned)
@@ -353,7 +373,16 @@ namespace ndda
                                    "Control/Linear solver: ",
                                    " Use direct or MUMPS for this scene.");
       }
-    x = tx; // every process gets the whole solution
+    // Every process gets the whole solution.
+    AssertThrow(impl.gathered->Import(tx.trilinos_vector(),
+                                      *impl.gather,
+                                      Insert) == 0,
+                ExcMessage("DistributedSolver: the solution could not be "
+                           "gathered."));
+    x.reinit(b.size(), true);
+    std::copy(impl.gathered->Values(),
+              impl.gathered->Values() + b.size(),
+              x.begin());
     return iterations;
   }
 } // namespace ndda
