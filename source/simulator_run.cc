@@ -82,7 +82,17 @@ namespace ndda
     pcout << "ndda: scene '" << parameters.scene_name << "'\n"
           << fem.summary() << ", output: " << directory << std::endl;
     if (n_processes > 1)
-      pcout << "  on " << n_processes << " MPI processes" << std::endl;
+      {
+        const auto solver = parameters.control.linear_solver;
+        const bool shared = solver == parameters::LinearSolverType::mumps ||
+                            solver == parameters::LinearSolverType::cg_amg;
+        pcout << "  on " << n_processes << " MPI processes, "
+              << (shared ? "which solve the linear systems together" :
+                           "each solving the whole linear systems (the "
+                           "run on one process to the bit; Linear solver "
+                           "= MUMPS or CG-AMG shares the solve)")
+              << std::endl;
+      }
     if (resumed)
       pcout << "  resumed from " << directory << "checkpoint.ndda at step "
             << step_number << ", t = " << time << " s" << std::endl;
