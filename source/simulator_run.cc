@@ -88,9 +88,9 @@ namespace ndda
                             solver == parameters::LinearSolverType::cg_amg;
         pcout << "  on " << n_processes << " MPI processes, "
               << (shared ? "which solve the linear systems together" :
-                           "each solving the whole linear systems (the "
-                           "run on one process to the bit; Linear solver "
-                           "= MUMPS or CG-AMG shares the solve)")
+                           "the first one solving the linear systems for all "
+                           "(the run on one process to the bit; Linear "
+                           "solver = MUMPS or CG-AMG shares the solve)")
               << std::endl;
       }
     if (resumed)

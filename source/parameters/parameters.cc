@@ -328,9 +328,10 @@ namespace ndda
           "parallel sparse direct solver MUMPS (through Trilinos' Amesos; "
           "its symmetric factorization where the matrix is symmetric, LU "
           "where it is not). On several MPI processes (mpirun -np N), "
-          "MUMPS and CG-AMG solve with all of them; direct, UMFPACK and "
-          "KLU solve the whole system on each process, which repeats the "
-          "run on one process to the bit.");
+          "MUMPS and CG-AMG solve with all of them; with direct, UMFPACK "
+          "and KLU the first process solves the whole system and sends the "
+          "solution to the others, which repeats the run on one process to "
+          "the bit.");
         prm.declare_entry("Solver tolerance",
                           "1e-10",
                           Patterns::Double(0.),

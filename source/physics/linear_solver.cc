@@ -17,9 +17,11 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <suitesparse/klu.h>
 #include <suitesparse/umfpack.h>
 
@@ -292,6 +294,54 @@ namespace ndda
 
 
 
+  namespace
+  {
+    /**
+     * Run @p work on the first process of @p communicator; if it throws
+     * there, every process throws the same message.
+     */
+    template <class Work>
+    void
+    on_first_process(const MPI_Comm communicator, const Work &work)
+    {
+      std::string error;
+      bool        failed = false;
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        {
+          try
+            {
+              work();
+            }
+          catch (const ExceptionBase &exc)
+            {
+              failed = true;
+              std::ostringstream message;
+              exc.print_info(message);
+              error = message.str();
+            }
+          catch (const std::exception &exc)
+            {
+              failed = true;
+              error  = exc.what();
+            }
+          catch (...)
+            {
+              failed = true;
+            }
+          // ExcMessage's text, without deal.II's indentation.
+          error.erase(0, error.find_first_not_of(" \n\t"));
+          while (!error.empty() && std::isspace(error.back()))
+            error.pop_back();
+          if (failed && error.empty())
+            error = "unknown error";
+        }
+      error = Utilities::MPI::broadcast(communicator, error, 0);
+      AssertThrow(error.empty(), ExcMessage(error));
+    }
+  } // namespace
+
+
+
   struct LinearSolver::Implementation
   {
     CholeskyFactorization cholesky;
@@ -323,13 +373,18 @@ namespace ndda
     , implementation(std::make_unique<Implementation>())
   {
     set_up_suitesparse();
-    // The serial solvers stay serial on several processes: every process
-    // factorizes the same matrix alike, so that a run repeats the run on
-    // one process to the bit.
+    // The serial solvers stay serial on several processes: the first
+    // process factorizes and solves, and sends the solution to the
+    // others, so that a run repeats the run on one process to the bit.
     const unsigned int n_processes =
       Utilities::MPI::job_supports_mpi() ?
         Utilities::MPI::n_mpi_processes(communicator) :
         1;
+    this->communicator = communicator;
+    first_process_solves =
+      n_processes > 1 && (type == parameters::LinearSolverType::direct ||
+                          type == parameters::LinearSolverType::umfpack ||
+                          type == parameters::LinearSolverType::klu);
     if (type == parameters::LinearSolverType::mumps)
       distributed =
         std::make_unique<DistributedSolver>(communicator,
@@ -369,9 +424,8 @@ namespace ndda
 
 
   void
-  LinearSolver::factorize(const SparseMatrix<double> &matrix)
+  LinearSolver::factorize_here(const SparseMatrix<double> &matrix)
   {
-    ++factorization_count;
     auto &impl = *implementation;
     try
       {
@@ -436,7 +490,7 @@ namespace ndda
 
 
   double
-  LinearSolver::solves_per_factorization() const
+  LinearSolver::solves_per_factorization_here() const
   {
     if (distributed != nullptr)
       return distributed->solves_per_factorization();
@@ -465,12 +519,11 @@ namespace ndda
 
 
   unsigned int
-  LinearSolver::solve_with_earlier_factorization(
-    const SparseMatrix<double> &matrix,
-    Vector<double>             &x,
-    const Vector<double>       &b,
-    const unsigned int          min_iterations,
-    const double                tolerance)
+  LinearSolver::reuse_here(const SparseMatrix<double> &matrix,
+                           Vector<double>             &x,
+                           const Vector<double>       &b,
+                           const unsigned int          min_iterations,
+                           const double                tolerance)
   {
     if (distributed != nullptr)
       return distributed_reuse(matrix, x, b, min_iterations, tolerance);
@@ -554,7 +607,7 @@ namespace ndda
 
 
   unsigned int
-  LinearSolver::solve(Vector<double> &x, const Vector<double> &b)
+  LinearSolver::solve_here(Vector<double> &x, const Vector<double> &b)
   {
     if (distributed != nullptr)
       return distributed->solve(x, b);
@@ -593,5 +646,79 @@ namespace ndda
     for (unsigned int i = 0; i < x.size(); ++i)
       x[i] = tx[i];
     return iterations;
+  }
+  void
+  LinearSolver::factorize(const SparseMatrix<double> &matrix)
+  {
+    ++factorization_count;
+    if (!first_process_solves)
+      {
+        factorize_here(matrix);
+        return;
+      }
+    on_first_process(communicator, [&]() { factorize_here(matrix); });
+    // The reuse decisions of every process follow the first one's
+    // factorization.
+    sent_solve_ratio =
+      Utilities::MPI::broadcast(communicator,
+                                Utilities::MPI::this_mpi_process(
+                                  communicator) == 0 ?
+                                  solves_per_factorization_here() :
+                                  0.,
+                                0);
+  }
+
+
+
+  double
+  LinearSolver::solves_per_factorization() const
+  {
+    return first_process_solves ? sent_solve_ratio :
+                                  solves_per_factorization_here();
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve_with_earlier_factorization(
+    const SparseMatrix<double> &matrix,
+    Vector<double>             &x,
+    const Vector<double>       &b,
+    const unsigned int          min_iterations,
+    const double                tolerance)
+  {
+    if (!first_process_solves)
+      return reuse_here(matrix, x, b, min_iterations, tolerance);
+    unsigned int iterations = 0;
+    on_first_process(communicator, [&]() {
+      iterations = reuse_here(matrix, x, b, min_iterations, tolerance);
+    });
+    iterations = Utilities::MPI::broadcast(communicator, iterations, 0);
+    if (iterations > 0)
+      send_solution(x, b.size());
+    return iterations;
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve(Vector<double> &x, const Vector<double> &b)
+  {
+    if (!first_process_solves)
+      return solve_here(x, b);
+    unsigned int iterations = 0;
+    on_first_process(communicator, [&]() { iterations = solve_here(x, b); });
+    send_solution(x, b.size());
+    return Utilities::MPI::broadcast(communicator, iterations, 0);
+  }
+
+
+
+  void
+  LinearSolver::send_solution(Vector<double> &x, const std::size_t n) const
+  {
+    if (x.size() != n)
+      x.reinit(n, true);
+    Utilities::MPI::broadcast(x.begin(), n, 0, communicator);
   }
 } // namespace ndda

@@ -30,9 +30,11 @@ namespace ndda
    * (`mpirun -np N`), CG-AMG are solved by the processes of @p communicator
    * together (DistributedSolver), each holding the same matrix and
    * right-hand side. The serial solvers (direct, UMFPACK, KLU) stay
-   * serial: every process factorizes the whole matrix alike, so that a run
-   * on several processes repeats the run on one to the bit. Every process
-   * gets the same solution, to the bit.
+   * serial: the first process factorizes and solves, and sends the
+   * solution (and any error) to the others, so that a run on several
+   * processes repeats the run on one to the bit and only one process
+   * holds the factors. Every process gets the same solution, to the
+   * bit.
    *
    * @ingroup physics
    */
@@ -127,6 +129,25 @@ namespace ndda
     }
 
   private:
+    /** What factorize(), solve(), solve_with_earlier_factorization() and
+     * solves_per_factorization() do on the process that does the work. */
+    void
+    factorize_here(const SparseMatrix<double> &matrix);
+    unsigned int
+    solve_here(Vector<double> &x, const Vector<double> &b);
+    unsigned int
+    reuse_here(const SparseMatrix<double> &matrix,
+               Vector<double>             &x,
+               const Vector<double>       &b,
+               const unsigned int          min_iterations,
+               const double                tolerance);
+    double
+    solves_per_factorization_here() const;
+
+    /** Send the first process's solution @p x (of size @p n) to all. */
+    void
+    send_solution(Vector<double> &x, const std::size_t n) const;
+
     /** solve_with_earlier_factorization() with the DistributedSolver. */
     unsigned int
     distributed_reuse(const SparseMatrix<double> &matrix,
@@ -141,8 +162,14 @@ namespace ndda
     std::unique_ptr<Implementation>    implementation;
     /// The solver of several processes, or of MUMPS (else null).
     std::unique_ptr<DistributedSolver> distributed;
-    std::vector<double>                rigid_body_modes;
-    unsigned int                       factorization_count = 0;
+    /// The processes of the run; whether a serial solver on several of
+    /// them works on the first one only, and the cost of its last
+    /// factorization there, sent to all.
+    MPI_Comm            communicator         = MPI_COMM_SELF;
+    bool                first_process_solves = false;
+    double              sent_solve_ratio     = 0;
+    std::vector<double> rigid_body_modes;
+    unsigned int        factorization_count = 0;
   };
 } // namespace ndda
 
