@@ -78,7 +78,7 @@ namespace
         std::copy(dof_map.dofs_of_cell(c),
                   dof_map.dofs_of_cell(c) + n,
                   dofs.begin());
-        const FullMatrix<double> &m = element_matrix(c);
+        const auto m = element_matrix(c);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             full.add(dofs[i], dofs[j], factor(c) * m(i, j));
@@ -127,7 +127,7 @@ namespace
     add_full_sum(
       full,
       dof_map,
-      [&](unsigned int c) -> const FullMatrix<double> & {
+      [&](unsigned int c) -> ndda::ElementCache<2>::CellMatrix {
         return cache[c].mass;
       },
       [](unsigned int) { return 1.; });
@@ -175,11 +175,12 @@ main(int argc, char **argv)
           differing += entries_differing(
             system.get_stiffness_matrix(),
             fem.dof_map,
-            [&](unsigned int c) -> const FullMatrix<double> & {
+            [&](unsigned int c) -> ndda::ElementCache<2>::CellMatrix {
               return cache[c].stiffness;
             },
             one);
-          const auto mass = [&](unsigned int c) -> const FullMatrix<double> & {
+          const auto mass =
+            [&](unsigned int c) -> ndda::ElementCache<2>::CellMatrix {
             return cache[c].mass;
           };
           differing +=

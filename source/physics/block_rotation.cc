@@ -193,7 +193,7 @@ namespace ndda
             v[i] = dof_map.local_component[i] == 0 ? qc * ax + qs * ay :
                                                      -qs * ax + qc * ay;
           }
-        const auto &k = element_cache[c].stiffness;
+        const auto k = element_cache[c].stiffness;
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
             double sum = 0;

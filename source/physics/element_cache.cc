@@ -52,19 +52,24 @@ namespace ndda
 
 
     /**
-     * @p K <- Q^T K Q: the element matrix of the global frame in the frame
+     * @p values <- Q^T K Q: the element matrix K (@p values, n x n row by
+     * row, n the size of @p partner) of the global frame in the frame
      * of angle @p angle, Q turning the (x, y) dofs of each node;
      * @p partner is the local dof of the other component of the same node,
      * @p component the component of each local dof.
      */
     void
-    turn_to_frame(FullMatrix<double>              &K,
+    turn_to_frame(double                          *values,
                   const std::vector<unsigned int> &partner,
                   const std::vector<unsigned int> &component,
                   const double                     angle)
     {
       const double       c = std::cos(angle), s = std::sin(angle);
-      const unsigned int n = K.m();
+      const unsigned int n = partner.size();
+      const auto         K = [values, n](const unsigned int i,
+                                 const unsigned int j) -> double         &{
+        return values[std::size_t(i) * n + j];
+      };
       // Rows (Q^T K), then columns (K Q), each on the x dof of a node and
       // its partner: [x; y] <- [c x + s y; -s x + c y].
       for (unsigned int i = 0; i < n; ++i)
@@ -140,42 +145,43 @@ namespace ndda
 
     /**
      * The density @p density0 scaled by initial_area / area, the area that
-     * of @p values (the cell quadrature) and initial_area the cell's first
-     * (set in @p d on the first call): the mass of a cell never changes.
+     * of @p values (the cell quadrature) and @p initial_area the cell's
+     * first (set on the first call): the mass of a cell never changes.
      */
-    template <int dim, typename CellData>
+    template <int dim>
     double
     conserved_density(const FEValues<dim> &values,
                       const double         density0,
-                      CellData            &d)
+                      double              &initial_area)
     {
       double area = 0;
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         area += values.JxW(q);
-      if (d.initial_area == 0)
-        d.initial_area = area;
-      return density0 * d.initial_area / area;
+      if (initial_area == 0)
+        initial_area = area;
+      return density0 * initial_area / area;
     }
 
 
 
-    /** Set @p mass to rho t int N^T N (mass quadrature in @p values). */
+    /** Set @p mass (n x n values row by row, n the element's dofs) to
+     * rho t int N^T N (mass quadrature in @p values). */
     template <int dim>
     void
     add_mass_matrix(const FEValues<dim> &values,
                     const double         density_times_thickness,
-                    FullMatrix<double>  &mass)
+                    double              *mass)
     {
       const FEValuesExtractors::Vector u(0);
       const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
-      mass.reinit(n_dofs, n_dofs);
+      std::fill_n(mass, n_dofs * n_dofs, 0.);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
             const Tensor<1, dim> phi_i = values[u].value(i, q);
             for (unsigned int j = 0; j < n_dofs; ++j)
-              mass(i, j) += density_times_thickness * values.JxW(q) *
-                            (phi_i * values[u].value(j, q));
+              mass[i * n_dofs + j] += density_times_thickness * values.JxW(q) *
+                                      (phi_i * values[u].value(j, q));
           }
     }
 
@@ -196,8 +202,9 @@ namespace ndda
      * the points of @p values (the cell quadrature), into @p gradient and
      * @p weight (the cell's entries of the flat arrays; @p component and
      * @p node those of each local dof, ElementCache::dof_components() and
-     * dof_nodes()), and the stiffness t int B^T C B into @p stiffness,
-     * @p vector_gradient a scratch array of a gradient per local dof.
+     * dof_nodes()), and the stiffness t int B^T C B into @p stiffness
+     * (n x n values row by row, n the element's dofs), @p vector_gradient
+     * a scratch array of a gradient per local dof.
      */
     template <int dim>
     void
@@ -206,7 +213,7 @@ namespace ndda
                   const double                                t,
                   const std::vector<unsigned int>            &component,
                   const std::vector<unsigned int>            &node,
-                  FullMatrix<double>                         &stiffness,
+                  double                                     *stiffness,
                   std::vector<Tensor<2, dim>>                &vector_gradient,
                   Tensor<1, dim>                             *gradient,
                   double                                     *weight)
@@ -215,7 +222,7 @@ namespace ndda
       const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
       const unsigned int n_nodes =
         values.get_fe().base_element(0).n_dofs_per_cell();
-      stiffness.reinit(n_dofs, n_dofs);
+      std::fill_n(stiffness, n_dofs * n_dofs, 0.);
       vector_gradient.resize(n_dofs);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
         {
@@ -231,7 +238,7 @@ namespace ndda
               const SymmetricTensor<2, dim> Ceps_i =
                 C[q] * symmetrize(vector_gradient[i]);
               for (unsigned int j = 0; j < n_dofs; ++j)
-                stiffness(i, j) +=
+                stiffness[i * n_dofs + j] +=
                   (Ceps_i * symmetrize(vector_gradient[j])) * weight[q];
             }
         }
@@ -255,10 +262,13 @@ namespace ndda
   void
   ElementCache<dim>::carry_to_cells(const refinement::RefineResult &refined)
   {
-    if (data.size() != refined.n_old_cells)
+    if (geometry.size() != refined.n_old_cells)
       return; // nothing computed yet: update() computes every cell
-    const unsigned int    n_cells = refined.cell_origin.size();
-    std::vector<CellData> carried(n_cells);
+    const unsigned int  n_cells  = refined.cell_origin.size();
+    const std::size_t   n_matrix = std::size_t(dofs_per_cell) * dofs_per_cell;
+    std::vector<double> carried_stiffness(n_cells * n_matrix),
+      carried_mass(n_cells * n_matrix), carried_viscosity(n_cells, 0.),
+      carried_area(n_cells, 0.);
     // The parts of bisected cells start with no geometry (diameter 0):
     // update() computes them.
     std::vector<CellGeometry>   carried_geometry(n_cells);
@@ -271,8 +281,15 @@ namespace ndda
         // A cell not bisected is its own origin, which has no parts.
         if (!refined.is_part[c])
           {
-            carried[c]          = std::move(data[c]);
-            carried_geometry[c] = geometry[c];
+            std::copy_n(stiffness_values.begin() + c * n_matrix,
+                        n_matrix,
+                        carried_stiffness.begin() + c * n_matrix);
+            std::copy_n(mass_values.begin() + c * n_matrix,
+                        n_matrix,
+                        carried_mass.begin() + c * n_matrix);
+            carried_viscosity[c] = viscosity_over_density[c];
+            carried_area[c]      = initial_area[c];
+            carried_geometry[c]  = geometry[c];
             std::copy_n(gradients.begin() + std::size_t(c) * n_gradients,
                         n_gradients,
                         carried_gradients.begin() +
@@ -282,16 +299,18 @@ namespace ndda
                         carried_weights.begin() + std::size_t(c) * n_q_points);
             continue;
           }
-        const auto &old = data[refined.cell_origin[c]];
-        const auto &r   = refined.reference_vertices[c];
+        const auto &r = refined.reference_vertices[c];
         // The part's share of the old cell: its area on the reference
         // triangle, whose area is 1/2.
         const double share =
           std::abs((r[1][0] - r[0][0]) * (r[2][1] - r[0][1]) -
                    (r[1][1] - r[0][1]) * (r[2][0] - r[0][0]));
-        carried[c].initial_area = old.initial_area * share;
+        carried_area[c] = initial_area[refined.cell_origin[c]] * share;
       }
-    data.swap(carried);
+    stiffness_values.swap(carried_stiffness);
+    mass_values.swap(carried_mass);
+    viscosity_over_density.swap(carried_viscosity);
+    initial_area.swap(carried_area);
     geometry.swap(carried_geometry);
     gradients.swap(carried_gradients);
     weights.swap(carried_weights);
@@ -303,8 +322,11 @@ namespace ndda
   void
   ElementCache<dim>::resize(const unsigned int n_cells)
   {
-    data.clear();
-    data.resize(n_cells);
+    const std::size_t n_matrix = std::size_t(dofs_per_cell) * dofs_per_cell;
+    stiffness_values.assign(n_cells * n_matrix, 0.);
+    mass_values.assign(n_cells * n_matrix, 0.);
+    viscosity_over_density.assign(n_cells, 0.);
+    initial_area.assign(n_cells, 0.);
     geometry.assign(n_cells, CellGeometry());
     gradients.assign(std::size_t(n_cells) * n_q_points * nodes_per_cell,
                      Tensor<1, dim>());
@@ -386,7 +408,7 @@ namespace ndda
                            "with the element's quadratures first."));
     const unsigned int n_cells =
       dof_handler.get_triangulation().n_active_cells();
-    if (data.size() != n_cells || n_q_points != quadrature.size() ||
+    if (geometry.size() != n_cells || n_q_points != quadrature.size() ||
         dofs_per_cell != fe.n_dofs_per_cell())
       {
         // The vector element is dim copies of one scalar element
@@ -472,8 +494,9 @@ namespace ndda
           NoCopy &) {
         const CellIterator &cell = *position;
         const unsigned int  c    = cell->active_cell_index();
-        CellData           &d    = data[c];
-        const double        frame_angle =
+        const std::size_t   offset =
+          std::size_t(c) * dofs_per_cell * dofs_per_cell;
+        const double frame_angle =
           frame_angles != nullptr ? (*frame_angles)[c] : 0.;
         scratch.fe_values.reinit(cell);
         scratch.mass_values.reinit(cell);
@@ -486,27 +509,30 @@ namespace ndda
                                  (*stresses)[std::size_t(c) * n_q_points + q]) :
               tangents[cell->material_id()];
 
-        d.viscosity_over_density =
+        viscosity_over_density[c] =
           material.density > 0 ? material.viscosity / material.density : 0.;
-        const double density =
-          conserved_density(scratch.fe_values, material.density, d);
+        const double density = conserved_density(scratch.fe_values,
+                                                 material.density,
+                                                 initial_area[c]);
 
         add_operators(scratch.fe_values,
                       scratch.C,
                       t,
                       dof_component,
                       dof_node,
-                      d.stiffness,
+                      stiffness_values.data() + offset,
                       scratch.vector_gradient,
                       gradients.data() +
                         std::size_t(c) * n_q_points * nodes_per_cell,
                       weights.data() + std::size_t(c) * n_q_points);
         if (frame_angle != 0.)
-          turn_to_frame(d.stiffness,
+          turn_to_frame(stiffness_values.data() + offset,
                         node_pair.first,
                         node_pair.second,
                         frame_angle);
-        add_mass_matrix(scratch.mass_values, density * t, d.mass);
+        add_mass_matrix(scratch.mass_values,
+                        density * t,
+                        mass_values.data() + offset);
         record_geometry(cell, geometry[c]);
         geometry[c].frame_angle = frame_angle;
       };

@@ -51,12 +51,15 @@ namespace ndda
    *   the present geometry however far the cell has turned since its data
    *   were computed (doc/theory.md).
    *
-   * The matrices are a record per cell (CellData); what the loops of every
-   * step read, the geometry and the operators, are flat arrays of their
-   * own, so that a pass over all cells streams through memory (doc/
-   * performance.md, "ndda's own work in a steady step"). The mass matrix
-   * uses the mass quadrature, QGaussSimplex(p + 1). Both come with the
-   * element (physics/finite_element.h) through set_quadratures().
+   * Every kind of datum is one flat array over the cells: the matrices
+   * (dofs_per_cell^2 values a cell each, read through operator[]), the
+   * geometry and the operators, so that a pass over all cells streams
+   * through memory (doc/performance.md, "ndda's own work in a steady
+   * step") and a cell costs no bookkeeping of its own (its two matrices
+   * as FullMatrix objects cost about 540 bytes a P1 cell beyond their
+   * values, doc/performance.md "The element cache in flat arrays"). The
+   * mass matrix uses the mass quadrature, QGaussSimplex(p + 1). Both come
+   * with the element (physics/finite_element.h) through set_quadratures().
    *
    * @ingroup physics
    */
@@ -64,22 +67,52 @@ namespace ndda
   class ElementCache
   {
   public:
+    /**
+     * A cell's element matrix in the cache: dofs_per_cell x dofs_per_cell
+     * values, row by row, read in place.
+     */
+    class CellMatrix
+    {
+    public:
+      CellMatrix(const double *values, const unsigned int size)
+        : values(values)
+        , size(size)
+      {}
+
+      const double &
+      operator()(const unsigned int i, const unsigned int j) const
+      {
+        return values[std::size_t(i) * size + j];
+      }
+
+      unsigned int
+      m() const
+      {
+        return size;
+      }
+
+      unsigned int
+      n() const
+      {
+        return size;
+      }
+
+    private:
+      const double *values;
+      unsigned int  size;
+    };
+
+    /** What operator[] gives of a cell: views of its matrices and its two
+     * numbers. */
     struct CellData
     {
-      FullMatrix<double> stiffness;
-      FullMatrix<double> mass;
+      CellMatrix stiffness;
+      CellMatrix mass;
       /// Viscosity over density: the damping matrix is this times mass.
-      double viscosity_over_density = 0;
+      double viscosity_over_density;
       /// Area at the first computation: the density is scaled by
       /// initial_area / area so that the mass of a cell never changes.
-      double initial_area = 0;
-
-      template <class Archive>
-      void
-      serialize(Archive &ar)
-      {
-        ar &stiffness &mass &viscosity_over_density &initial_area;
-      }
+      double initial_area;
     };
 
     /**
@@ -116,8 +149,9 @@ namespace ndda
     void
     serialize(Archive &ar)
     {
-      ar &data &geometry &gradients &weights &dofs_per_cell &nodes_per_cell
-        &dof_component &dof_node &tangents &computed_cells;
+      ar &stiffness_values &mass_values &viscosity_over_density &initial_area
+        &geometry &gradients &weights &dofs_per_cell &nodes_per_cell
+          &dof_component &dof_node &tangents &computed_cells;
     }
 
     /**
@@ -169,10 +203,15 @@ namespace ndda
     static bool
     tangent_depends_on_stress(const parameters::Materials &materials);
 
-    const CellData &
+    CellData
     operator[](const unsigned int cell) const
     {
-      return data[cell];
+      const std::size_t offset =
+        std::size_t(cell) * dofs_per_cell * dofs_per_cell;
+      return {CellMatrix(stiffness_values.data() + offset, dofs_per_cell),
+              CellMatrix(mass_values.data() + offset, dofs_per_cell),
+              viscosity_over_density[cell],
+              initial_area[cell]};
     }
 
     /**
@@ -334,7 +373,12 @@ namespace ndda
     void
     resize(const unsigned int n_cells);
 
-    std::vector<CellData>     data;
+    /// The cells' stiffness and mass matrices, dofs_per_cell^2 values a
+    /// cell, row by row (operator[]).
+    std::vector<double> stiffness_values, mass_values;
+    /// By cell: CellData::viscosity_over_density and
+    /// CellData::initial_area.
+    std::vector<double>       viscosity_over_density, initial_area;
     std::vector<CellGeometry> geometry;
     /// The cells' scalar shape gradients and weights (gradients_of(),
     /// weights_of()).
