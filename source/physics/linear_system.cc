@@ -72,9 +72,15 @@ namespace ndda
     damped = false;
     system_matrix.reinit(sparsity_pattern);
     condensed_base.reinit(sparsity_pattern);
-    condensed_matrix.reinit(sparsity_pattern);
+    // A compact system solves with compact_matrix (solver_matrix()): the
+    // condensed matrix with the springs would be one more matrix with the
+    // whole pattern, unused.
     if (!compact)
-      return;
+      {
+        condensed_matrix.reinit(sparsity_pattern);
+        return;
+      }
+    condensed_matrix.clear();
     // The pattern of the unconstrained dofs among themselves.
     const auto &affine = constraints.affine_constraints();
     free_dofs.clear();
