@@ -6,8 +6,8 @@
 // fixed base, gravity, DDA, dt = 2 ms, penalty 10 E, friction 35 degrees,
 // KLU unless the third argument names another solver), with
 // `Control/Kinematics` = meshed, affine and rigid. Walls of
-// about 100, 1000 and 10,000 bricks (courses x bricks per course: 12 x 8,
-// 25 x 40, 100 x 100).
+// about 100, 1000, 10,000 and 100,000 bricks (courses x bricks per course:
+// 12 x 8, 25 x 40, 100 x 100, 100 x 1000).
 //
 // Two starts (fifth argument): `ramped` (the default) raises gravity
 // linearly from 0 over eight periods of the wall's fundamental mode
@@ -24,7 +24,8 @@
 // step with its own iterations), factorizations per step, the mean
 // accepted step over the nominal 2 ms (below 1 where steps were cut: the
 // time per step then covers less simulated time), and the set-up time in
-// seconds (meshing, element matrices, sparsity).
+// seconds (meshing, element matrices, sparsity), and the run's peak
+// resident memory in MB (VmHWM, reset before each run).
 //
 // The detection distance (sixth argument): `motion` (the default, as in
 // ndda) keeps `Control/Maximum displacement ratio` = 0.01 and sets
@@ -37,10 +38,12 @@
 // 12 / courses, so that every wall has the 12-course wall's 0.06 m: the
 // same work per brick.
 //
-// Usage: block_models [steps] [largest wall: 1, 2 or 3] [linear solver]
+// The seventh argument `only` runs the largest wall alone.
+//
+// Usage: block_models [steps] [largest wall: 1, 2, 3 or 4] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
-//                     [scene | brick | motion]
-//        (default 50, 2, KLU, meshed,affine,rigid, ramped, motion)
+//                     [scene | brick | motion] [all | only]
+//        (default 50, 2, KLU, meshed,affine,rigid, ramped, motion, all)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -57,6 +60,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "plain_system.h"
 
 namespace
 {
@@ -186,6 +191,7 @@ end
     // Shi's detection distance is 2 x the ratio x half the scene's height:
     // 0.06 m for 12 courses, 0.5 m for 100. `brick` keeps it at 0.06 m.
     const double ratio = detection == "brick" ? 0.01 * 12. / courses : 0.01;
+    plain_system::reset_peak_rss();
     dealii::ParameterHandler     prm;
     ndda::parameters::Parameters parameters;
     parameters.read(wall(courses,
@@ -203,13 +209,28 @@ end
     const double setup = std::chrono::duration<double>(
                            std::chrono::steady_clock::now() - start_setup)
                            .count();
+    // A line on the error stream at most every 30 s: the large walls take
+    // seconds a step.
+    auto       last_report = std::chrono::steady_clock::now();
+    const auto progress    = [&](const unsigned int step, const double time) {
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - last_report).count() < 30)
+        return;
+      last_report = now;
+      std::cerr << "  " << model << " " << courses << " x " << length
+                << ": step " << step << ", t = " << time << " s, resident "
+                << plain_system::status_bytes("VmRSS") / 1e6 << " MB"
+                << std::endl;
+    };
     // The untimed start: ten steps, or one and a half ramps.
     const unsigned int skip = 10;
     double             time = 0;
-    for (unsigned int s = 0; s < skip || time < 1.5 * ramp; ++s)
+    unsigned int       step = 0;
+    for (; step < skip || time < 1.5 * ramp; ++step)
       {
         simulator.do_time_step();
         time += simulator.get_step_report().dt;
+        progress(step + 1, time);
       }
     std::vector<double> times;
     unsigned int        iterations = 0, cuts = 0;
@@ -225,6 +246,7 @@ end
         iterations += simulator.get_contacts().get_statistics().n_iterations;
         cuts += simulator.get_step_report().cuts;
         simulated += simulator.get_step_report().dt;
+        progress(step + s + 1, time + simulated);
       }
     double total = 0;
     for (const double t : times)
@@ -244,7 +266,9 @@ end
                    times.size()
               << std::setw(8) << simulated / (2e-3 * times.size())
               << std::setprecision(1) << std::setw(9) << setup
-              << std::defaultfloat << std::endl;
+              << std::setprecision(0) << std::setw(9)
+              << plain_system::status_bytes("VmHWM") / 1e6 << std::defaultfloat
+              << std::endl;
     std::cout << "@value block_models." << model << "." << bricks << ".ms "
               << std::setprecision(3) << mean << std::endl;
   }
@@ -260,6 +284,7 @@ main(int argc, char **argv)
   const std::string  models    = argc > 4 ? argv[4] : "meshed,affine,rigid";
   const std::string  start     = argc > 5 ? argv[5] : "ramped";
   const std::string  detection = argc > 6 ? argv[6] : "motion";
+  const bool         only      = argc > 7 && std::string(argv[7]) == "only";
   if (detection != "scene" && detection != "brick" && detection != "motion")
     {
       std::cerr << "block_models: the sixth argument must be 'scene', "
@@ -290,9 +315,12 @@ main(int argc, char **argv)
             << std::setw(11) << "median" << std::setw(12) << "us/brick"
             << std::setw(8) << "o-c it" << std::setw(8) << "cuts"
             << std::setw(8) << "fact." << std::setw(8) << "dt/dt0"
-            << std::setw(9) << "setup s" << std::endl;
-  const unsigned int sizes[3][2] = {{12, 8}, {25, 40}, {100, 100}};
-  for (unsigned int s = 0; s < largest && s < 3; ++s)
+            << std::setw(9) << "setup s" << std::setw(9) << "peak MB"
+            << std::endl;
+  const unsigned int sizes[4][2] = {{12, 8}, {25, 40}, {100, 100}, {100, 1000}};
+  for (unsigned int s = only ? std::min(largest, 4u) - 1 : 0;
+       s < largest && s < 4;
+       ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
       if (("," + models + ",").find("," + model + ",") != std::string::npos)
         run(sizes[s][0], sizes[s][1], model, solver, steps, ramped, detection);
