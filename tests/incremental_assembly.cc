@@ -127,9 +127,7 @@ namespace
     add_full_sum(
       full,
       dof_map,
-      [&](unsigned int c) -> ndda::ElementCache<2>::CellMatrix {
-        return cache[c].mass;
-      },
+      [&](unsigned int c) { return cache[c].mass; },
       [](unsigned int) { return 1.; });
     unsigned int missing = 0;
     for (unsigned int r = 0; r < full.m(); ++r)
@@ -179,10 +177,7 @@ main(int argc, char **argv)
               return cache[c].stiffness;
             },
             one);
-          const auto mass =
-            [&](unsigned int c) -> ndda::ElementCache<2>::CellMatrix {
-            return cache[c].mass;
-          };
+          const auto mass = [&](unsigned int c) { return cache[c].mass; };
           differing +=
             entries_differing(system.get_mass_matrix(), fem.dof_map, mass, one);
           // M is stored without its zeros: every nonzero of the full sum

@@ -13,7 +13,7 @@ namespace ndda
     /// The first bytes of every archive, and the version of the format:
     /// raised whenever a class changes what its serialize() lists.
     const std::string  magic          = "ndda archive\n";
-    const std::int32_t format_version = 5;
+    const std::int32_t format_version = 6;
     /// Written as bytes: reads back as this only on a machine of the same
     /// byte order.
     const std::uint32_t byte_order = 0x01020304;

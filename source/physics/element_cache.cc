@@ -164,24 +164,32 @@ namespace ndda
 
 
 
-    /** Set @p mass (n x n values row by row, n the element's dofs) to
-     * rho t int N^T N (mass quadrature in @p values). */
+    /**
+     * Set @p mass (n x n values row by row, n the element's nodes) to the
+     * scalar mass rho t int phi_a phi_b of nodes a and b (mass quadrature
+     * in @p values; ElementCache::CellMass), @p node_dofs the local dof of
+     * each node in the first component. The entry of dofs i and j of one
+     * component is the same sum of the same products as the vector form
+     * rho t int N_i . N_j gives it, whose other component is zero.
+     */
     template <int dim>
     void
-    add_mass_matrix(const FEValues<dim> &values,
-                    const double         density_times_thickness,
-                    double              *mass)
+    add_mass_matrix(const FEValues<dim>             &values,
+                    const double                     density_times_thickness,
+                    const std::vector<unsigned int> &node_dofs,
+                    double                          *mass)
     {
       const FEValuesExtractors::Vector u(0);
-      const unsigned int n_dofs = values.get_fe().n_dofs_per_cell();
-      std::fill_n(mass, n_dofs * n_dofs, 0.);
+      const unsigned int               n_nodes = node_dofs.size();
+      std::fill_n(mass, n_nodes * n_nodes, 0.);
       for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
-        for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int a = 0; a < n_nodes; ++a)
           {
-            const Tensor<1, dim> phi_i = values[u].value(i, q);
-            for (unsigned int j = 0; j < n_dofs; ++j)
-              mass[i * n_dofs + j] += density_times_thickness * values.JxW(q) *
-                                      (phi_i * values[u].value(j, q));
+            const Tensor<1, dim> phi_a = values[u].value(node_dofs[a], q);
+            for (unsigned int b = 0; b < n_nodes; ++b)
+              mass[a * n_nodes + b] +=
+                density_times_thickness * values.JxW(q) *
+                (phi_a * values[u].value(node_dofs[b], q));
           }
     }
 
@@ -265,9 +273,10 @@ namespace ndda
     if (geometry.size() != refined.n_old_cells)
       return; // nothing computed yet: update() computes every cell
     const unsigned int  n_cells  = refined.cell_origin.size();
-    const std::size_t   n_matrix = std::size_t(dofs_per_cell) * dofs_per_cell;
+    const std::size_t   n_matrix = stiffness_offset(1);
+    const std::size_t   n_mass   = mass_offset(1);
     std::vector<double> carried_stiffness(n_cells * n_matrix),
-      carried_mass(n_cells * n_matrix), carried_viscosity(n_cells, 0.),
+      carried_mass(n_cells * n_mass), carried_viscosity(n_cells, 0.),
       carried_area(n_cells, 0.);
     // The parts of bisected cells start with no geometry (diameter 0):
     // update() computes them.
@@ -281,12 +290,12 @@ namespace ndda
         // A cell not bisected is its own origin, which has no parts.
         if (!refined.is_part[c])
           {
-            std::copy_n(stiffness_values.begin() + c * n_matrix,
+            std::copy_n(stiffness_values.begin() + stiffness_offset(c),
                         n_matrix,
-                        carried_stiffness.begin() + c * n_matrix);
-            std::copy_n(mass_values.begin() + c * n_matrix,
-                        n_matrix,
-                        carried_mass.begin() + c * n_matrix);
+                        carried_stiffness.begin() + stiffness_offset(c));
+            std::copy_n(mass_values.begin() + mass_offset(c),
+                        n_mass,
+                        carried_mass.begin() + mass_offset(c));
             carried_viscosity[c] = viscosity_over_density[c];
             carried_area[c]      = initial_area[c];
             carried_geometry[c]  = geometry[c];
@@ -322,9 +331,8 @@ namespace ndda
   void
   ElementCache<dim>::resize(const unsigned int n_cells)
   {
-    const std::size_t n_matrix = std::size_t(dofs_per_cell) * dofs_per_cell;
-    stiffness_values.assign(n_cells * n_matrix, 0.);
-    mass_values.assign(n_cells * n_matrix, 0.);
+    stiffness_values.assign(stiffness_offset(n_cells), 0.);
+    mass_values.assign(mass_offset(n_cells), 0.);
     viscosity_over_density.assign(n_cells, 0.);
     initial_area.assign(n_cells, 0.);
     geometry.assign(n_cells, CellGeometry());
@@ -451,8 +459,13 @@ namespace ndda
     // Before the initial state is set the stresses are not sized yet.
     const bool stresses_known =
       point_tangents && stresses->size() == std::size_t(n_cells) * n_q_points;
-    const auto   node_pair = node_pairs(fe);
-    const double t         = materials.thickness;
+    const auto node_pair = node_pairs(fe);
+    // The local dof of each node in the first component (CellMass).
+    std::vector<unsigned int> node_dofs(nodes_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      if (dof_component[i] == 0)
+        node_dofs[dof_node[i]] = i;
+    const double t = materials.thickness;
 
     // Every cell on deal.II's threads (WorkStream), each thread with
     // FEValues of its own; a cell writes only its own entries, so the data
@@ -492,11 +505,10 @@ namespace ndda
       [&](const typename std::vector<CellIterator>::const_iterator &position,
           Scratch                                                  &scratch,
           NoCopy &) {
-        const CellIterator &cell = *position;
-        const unsigned int  c    = cell->active_cell_index();
-        const std::size_t   offset =
-          std::size_t(c) * dofs_per_cell * dofs_per_cell;
-        const double frame_angle =
+        const CellIterator &cell   = *position;
+        const unsigned int  c      = cell->active_cell_index();
+        const std::size_t   offset = stiffness_offset(c);
+        const double        frame_angle =
           frame_angles != nullptr ? (*frame_angles)[c] : 0.;
         scratch.fe_values.reinit(cell);
         scratch.mass_values.reinit(cell);
@@ -532,7 +544,8 @@ namespace ndda
                         frame_angle);
         add_mass_matrix(scratch.mass_values,
                         density * t,
-                        mass_values.data() + offset);
+                        node_dofs,
+                        mass_values.data() + mass_offset(c));
         record_geometry(cell, geometry[c]);
         geometry[c].frame_angle = frame_angle;
       };

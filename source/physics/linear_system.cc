@@ -70,17 +70,17 @@ namespace ndda
     // whole pattern.
     damping_matrix.clear();
     damped = false;
-    system_matrix.reinit(sparsity_pattern);
+    if (keep_system_matrix)
+      system_matrix.reinit(sparsity_pattern);
+    else
+      system_matrix.clear();
     condensed_base.reinit(sparsity_pattern);
-    // A compact system solves with compact_matrix (solver_matrix()): the
-    // condensed matrix with the springs would be one more matrix with the
-    // whole pattern, unused.
-    if (!compact)
-      {
-        condensed_matrix.reinit(sparsity_pattern);
-        return;
-      }
+    // The condensed matrix with the springs comes with the first solve
+    // that has springs (solve()); a compact system solves with
+    // compact_matrix instead (solver_matrix()).
     condensed_matrix.clear();
+    if (!compact)
+      return;
     // The pattern of the unconstrained dofs among themselves.
     const auto &affine = constraints.affine_constraints();
     free_dofs.clear();
@@ -261,7 +261,9 @@ namespace ndda
   const SparseMatrix<double> &
   LinearSystem::solver_matrix()
   {
-    return compact ? compact_matrix : condensed_matrix;
+    if (compact)
+      return with_springs ? compact_matrix : compact_base;
+    return with_springs ? condensed_matrix : condensed_base;
   }
 
 
@@ -368,16 +370,23 @@ namespace ndda
         damping_coefficient == assembled_coefficients[1])
       return;
     const auto section = scope(timer, "system matrix");
-    system_matrix.copy_from(stiffness_matrix);
-    if (mass_coefficient != 0.)
-      system_matrix.add(mass_coefficient, mass_matrix);
-    if (damped)
-      system_matrix.add(damping_coefficient, damping_matrix);
-    if (!constraints.exact())
-      constraints.add_penalty_springs(penalty_stiffness, system_matrix);
     // Condensed once: the contact springs of the steps are added to a copy
     // through the lines (solve()).
-    condensed_base.copy_from(system_matrix);
+    if (keep_system_matrix)
+      {
+        build_system_matrix(system_matrix,
+                            mass_coefficient,
+                            damping_coefficient,
+                            constraints,
+                            penalty_stiffness);
+        condensed_base.copy_from(system_matrix);
+      }
+    else
+      build_system_matrix(condensed_base,
+                          mass_coefficient,
+                          damping_coefficient,
+                          constraints,
+                          penalty_stiffness);
     constraints.affine_constraints().condense(condensed_base);
     if (compact)
       for (unsigned int r = 0; r < free_dofs.size(); ++r)
@@ -403,6 +412,24 @@ namespace ndda
     assembled_coefficients[1] = damping_coefficient;
     matrices_changed          = false;
     base_factorized           = false;
+  }
+
+
+
+  void
+  LinearSystem::build_system_matrix(SparseMatrix<double> &matrix,
+                                    const double          mass_coefficient,
+                                    const double          damping_coefficient,
+                                    const Constraints    &constraints,
+                                    const double penalty_stiffness) const
+  {
+    matrix.copy_from(stiffness_matrix);
+    if (mass_coefficient != 0.)
+      matrix.add(mass_coefficient, mass_matrix);
+    if (damped)
+      matrix.add(damping_coefficient, damping_matrix);
+    if (!constraints.exact())
+      constraints.add_penalty_springs(penalty_stiffness, matrix);
   }
 
 
@@ -437,16 +464,34 @@ namespace ndda
     g_blocks.clear();
     if (with_g)
       {
+        // The first solve with prescribed increments: from now on the
+        // system matrix is kept (prepare_step()). Exact constraints have
+        // no penalty springs.
+        if (!keep_system_matrix)
+          {
+            keep_system_matrix = true;
+            system_matrix.reinit(sparsity_pattern);
+            build_system_matrix(system_matrix,
+                                assembled_coefficients[0],
+                                assembled_coefficients[1],
+                                constraints,
+                                0.);
+          }
         ag.reinit(b.size());
         system_matrix.vmult(ag, g);
       }
+    with_springs = springs;
     if (springs)
       {
         const auto section = scope(timer, "contact assembly");
         if (compact)
           compact_matrix.copy_from(compact_base);
         else
-          condensed_matrix.copy_from(condensed_base);
+          {
+            if (condensed_matrix.empty())
+              condensed_matrix.reinit(sparsity_pattern);
+            condensed_matrix.copy_from(condensed_base);
+          }
         add_springs(
           [&](const unsigned int                              key,
               const ArrayView<const types::global_dof_index> &dofs,
@@ -517,13 +562,6 @@ namespace ndda
             return true;
           },
           b);
-      }
-    else if (!base_factorized)
-      {
-        if (compact)
-          compact_matrix.copy_from(compact_base);
-        else
-          condensed_matrix.copy_from(condensed_base);
       }
     if (in_frame)
       frames->to_frame(b);

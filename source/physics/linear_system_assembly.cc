@@ -67,14 +67,18 @@ namespace ndda
                               const std::vector<bool>                    *rows)
   {
     // Row by row, as SparseMatrix::add(indices, full_matrix) adds a full
-    // matrix: the same additions in the same order.
+    // matrix: the same additions in the same order (the zeros of the mass
+    // between components are not added, as add() elides zeros).
     const unsigned int n = dofs.size();
+    mass_row.resize(n);
     for (unsigned int i = 0; i < n; ++i)
       {
         if (rows != nullptr && !(*rows)[dofs[i]])
           continue;
         stiffness_matrix.add(dofs[i], n, dofs.data(), &data.stiffness(i, 0));
-        mass_matrix.add(dofs[i], n, dofs.data(), &data.mass(i, 0));
+        for (unsigned int j = 0; j < n; ++j)
+          mass_row[j] = data.mass(i, j);
+        mass_matrix.add(dofs[i], n, dofs.data(), mass_row.data());
         if (data.viscosity_over_density > 0)
           {
             if (damping_matrix.empty())

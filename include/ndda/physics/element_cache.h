@@ -35,6 +35,7 @@ namespace ndda
    *   the frame of the cell's block (BlockFrames) at the time: Q^T K Q,
    * - mass: rho t * int N^T N (consistent mass, thesis 3.60 without the
    *   time-step factor), with rho scaled to keep the cell's initial mass,
+   *   kept as the scalar mass of the nodes (CellMass),
    * - at every point of the element's cell quadrature (QGaussSimplex(p),
    *   one point for P1, whose strain is constant; the stress lives at these
    *   points), the gradient of the scalar shape function of each node and
@@ -52,7 +53,7 @@ namespace ndda
    *   were computed (doc/theory.md).
    *
    * Every kind of datum is one flat array over the cells: the matrices
-   * (dofs_per_cell^2 values a cell each, read through operator[]), the
+   * (read through operator[]), the
    * geometry and the operators, so that a pass over all cells streams
    * through memory (doc/performance.md, "ndda's own work in a steady
    * step") and a cell costs no bookkeeping of its own (its two matrices
@@ -102,12 +103,64 @@ namespace ndda
       unsigned int  size;
     };
 
+    /**
+     * A cell's consistent mass in the cache. rho t int N^T N couples only
+     * the dofs of one component, and those by the same scalar mass
+     * rho t int phi_a phi_b of their nodes a and b in every component, so
+     * the cache keeps that scalar matrix (nodes_per_cell^2 values, row by
+     * row) and this view reads it as the dofs_per_cell x dofs_per_cell
+     * matrix: a quarter of the values for a 2D element
+     * (doc/performance.md, "The element mass by nodes").
+     */
+    class CellMass
+    {
+    public:
+      CellMass(const double       *values,
+               const unsigned int *component,
+               const unsigned int *node,
+               const unsigned int  n_dofs,
+               const unsigned int  n_nodes)
+        : values(values)
+        , component(component)
+        , node(node)
+        , n_dofs(n_dofs)
+        , n_nodes(n_nodes)
+      {}
+
+      double
+      operator()(const unsigned int i, const unsigned int j) const
+      {
+        return component[i] == component[j] ?
+                 values[std::size_t(node[i]) * n_nodes + node[j]] :
+                 0.;
+      }
+
+      unsigned int
+      m() const
+      {
+        return n_dofs;
+      }
+
+      unsigned int
+      n() const
+      {
+        return n_dofs;
+      }
+
+    private:
+      const double       *values;
+      const unsigned int *component;
+      const unsigned int *node;
+      unsigned int        n_dofs;
+      unsigned int        n_nodes;
+    };
+
     /** What operator[] gives of a cell: views of its matrices and its two
      * numbers. */
     struct CellData
     {
       CellMatrix stiffness;
-      CellMatrix mass;
+      CellMass   mass;
       /// Viscosity over density: the damping matrix is this times mass.
       double viscosity_over_density;
       /// Area at the first computation: the density is scaled by
@@ -206,10 +259,13 @@ namespace ndda
     CellData
     operator[](const unsigned int cell) const
     {
-      const std::size_t offset =
-        std::size_t(cell) * dofs_per_cell * dofs_per_cell;
-      return {CellMatrix(stiffness_values.data() + offset, dofs_per_cell),
-              CellMatrix(mass_values.data() + offset, dofs_per_cell),
+      return {CellMatrix(stiffness_values.data() + stiffness_offset(cell),
+                         dofs_per_cell),
+              CellMass(mass_values.data() + mass_offset(cell),
+                       dof_component.data(),
+                       dof_node.data(),
+                       dofs_per_cell,
+                       nodes_per_cell),
               viscosity_over_density[cell],
               initial_area[cell]};
     }
@@ -373,8 +429,23 @@ namespace ndda
     void
     resize(const unsigned int n_cells);
 
-    /// The cells' stiffness and mass matrices, dofs_per_cell^2 values a
-    /// cell, row by row (operator[]).
+    /** Where the stiffness of cell @p cell starts in stiffness_values. */
+    std::size_t
+    stiffness_offset(const unsigned int cell) const
+    {
+      return std::size_t(cell) * dofs_per_cell * dofs_per_cell;
+    }
+
+    /** Where the scalar mass of cell @p cell starts in mass_values. */
+    std::size_t
+    mass_offset(const unsigned int cell) const
+    {
+      return std::size_t(cell) * nodes_per_cell * nodes_per_cell;
+    }
+
+    /// The cells' stiffness matrices, dofs_per_cell^2 values a cell, and
+    /// their scalar masses, nodes_per_cell^2 values a cell (CellMass), row
+    /// by row (operator[]).
     std::vector<double> stiffness_values, mass_values;
     /// By cell: CellData::viscosity_over_density and
     /// CellData::initial_area.

@@ -304,6 +304,16 @@ namespace ndda
     reinit_matrices(DynamicSparsityPattern &dsp,
                     const Constraints      &constraints);
 
+    /** Set @p matrix (on the sparsity pattern) to K + c_M M + c_C C, and
+     * the penalty springs of inexact @p constraints of stiffness
+     * @p penalty_stiffness. */
+    void
+    build_system_matrix(SparseMatrix<double> &matrix,
+                        const double          mass_coefficient,
+                        const double          damping_coefficient,
+                        const Constraints    &constraints,
+                        const double          penalty_stiffness) const;
+
     SectionTimer *timer = nullptr;
 
     /// Couplings of elements and bolts, before contacts and condensation.
@@ -317,13 +327,24 @@ namespace ndda
     SparsityPattern      mass_pattern;
     SparseMatrix<double> mass_operator;
     SparseMatrix<double> damping_matrix;
+    /// The system matrix K + c_M M + c_C C (with the penalty springs of
+    /// inexact constraints), only once a solve has prescribed increments
+    /// (A g in solve(), prescribed_work()): else it is built in
+    /// condensed_base alone, one matrix with the whole pattern less.
     SparseMatrix<double> system_matrix;
+    bool                 keep_system_matrix = false;
     /// The system matrix condensed with the constraints' lines, once per
     /// prepare_step() that changes it.
     SparseMatrix<double> condensed_base;
     /// The condensed system matrix with the contact springs of the solve
-    /// (added through the lines, block by block).
+    /// (added through the lines, block by block), allocated by the first
+    /// solve with springs.
     SparseMatrix<double> condensed_matrix;
+    /// The last solve() added contact springs: the solver's matrix is the
+    /// one with the springs, else the base (solver_matrix()).
+    bool with_springs = false;
+    /// One row of a cell's mass matrix (add_cell_rows()).
+    std::vector<double> mass_row;
     /// The compact system: the unconstrained dofs (in order), the index
     /// of every dof among them (invalid: constrained), the condensed
     /// system matrix on them (once per prepare_step() that changes it),
@@ -422,7 +443,9 @@ namespace ndda
                   const bool            springs,
                   const unsigned int    reuse_iterations);
 
-    /** The solver's matrix: the condensed matrix, or the compact one. */
+    /** The solver's matrix: the condensed matrix, or the compact one,
+     * with the springs of the last solve() if it had any, else the base
+     * matrix. */
     const SparseMatrix<double> &
     solver_matrix();
 
