@@ -314,7 +314,7 @@ namespace ndda
         prm.declare_entry(
           "Linear solver",
           "direct",
-          Patterns::Selection("UMFPACK|direct|KLU|CG-AMG|MUMPS"),
+          Patterns::Selection("UMFPACK|direct|KLU|CG-AMG|CG-Jacobi|MUMPS"),
           "direct: sparse Cholesky (CHOLMOD, supernodal) where the system "
           "matrix is symmetric positive definite (elasticity, inertia, "
           "contact springs, constraints), UMFPACK's LU where it is not "
@@ -324,18 +324,23 @@ namespace ndda
           "multifrontal, for every system; KLU: sparse direct, "
           "SuiteSparse's KLU (little overhead per factorization, keeps "
           "the pivot order between contact iterations; best for many "
-          "small blocks); CG-AMG: Trilinos CG with ML AMG; MUMPS: the "
+          "small blocks); CG-AMG: Trilinos CG with ML AMG; CG-Jacobi: CG "
+          "(BiCGStab where sliding friction makes the matrix non-symmetric) "
+          "preconditioned by the diagonal, on ndda's matrix itself: the "
+          "least memory of all, for continua with a time step near the "
+          "time a wave takes to cross an element (its iterations grow "
+          "with that ratio); MUMPS: the "
           "parallel sparse direct solver MUMPS (through Trilinos' Amesos; "
           "its symmetric factorization where the matrix is symmetric, LU "
           "where it is not). On several MPI processes (mpirun -np N), "
-          "MUMPS and CG-AMG solve with all of them; with direct, UMFPACK "
-          "and KLU the first process solves the whole system and sends the "
+          "MUMPS and CG-AMG solve with all of them; with direct, UMFPACK, "
+          "KLU and CG-Jacobi the first process solves the whole system and sends the "
           "solution to the others, which repeats the run on one process to "
           "the bit.");
         prm.declare_entry("Solver tolerance",
                           "1e-10",
                           Patterns::Double(0.),
-                          "Relative residual for CG-AMG.");
+                          "Relative residual for CG-AMG and CG-Jacobi.");
         prm.declare_entry("Constraint method",
                           "exact",
                           Patterns::Selection("exact|penalty"),
@@ -417,11 +422,12 @@ namespace ndda
                              "greater than zero, e.g. 0.01."));
       max_step_cuts     = prm.get_integer("Maximum step cuts");
       const auto ls     = prm.get("Linear solver");
-      linear_solver     = ls == "direct"  ? LinearSolverType::direct :
-                          ls == "UMFPACK" ? LinearSolverType::umfpack :
-                          ls == "KLU"     ? LinearSolverType::klu :
-                          ls == "MUMPS"   ? LinearSolverType::mumps :
-                                            LinearSolverType::cg_amg;
+      linear_solver     = ls == "direct"    ? LinearSolverType::direct :
+                          ls == "UMFPACK"   ? LinearSolverType::umfpack :
+                          ls == "KLU"       ? LinearSolverType::klu :
+                          ls == "MUMPS"     ? LinearSolverType::mumps :
+                          ls == "CG-Jacobi" ? LinearSolverType::cg_jacobi :
+                                              LinearSolverType::cg_amg;
       solver_tolerance  = prm.get_double("Solver tolerance");
       constraint_method = prm.get("Constraint method") == "exact" ?
                             ConstraintMethod::exact :

@@ -10,6 +10,7 @@
 
 #include <ndda/parallel/distributed_solver.h>
 #include <ndda/physics/cg_amg.h>
+#include <ndda/physics/cg_jacobi.h>
 #include <ndda/physics/cholesky.h>
 #include <ndda/physics/linear_solver.h>
 #include <ndda/physics/suitesparse_setup.h>
@@ -350,6 +351,7 @@ namespace ndda
     bool                              cholesky_active = false;
     Umfpack                           umfpack;
     Klu                               klu;
+    JacobiCG                          jacobi;
     TrilinosWrappers::SparseMatrix    trilinos_matrix;
     TrilinosWrappers::PreconditionAMG amg;
     IndexSet                          all;
@@ -384,7 +386,8 @@ namespace ndda
     first_process_solves =
       n_processes > 1 && (type == parameters::LinearSolverType::direct ||
                           type == parameters::LinearSolverType::umfpack ||
-                          type == parameters::LinearSolverType::klu);
+                          type == parameters::LinearSolverType::klu ||
+                          type == parameters::LinearSolverType::cg_jacobi);
     if (type == parameters::LinearSolverType::mumps)
       distributed =
         std::make_unique<DistributedSolver>(communicator,
@@ -462,6 +465,11 @@ namespace ndda
         if (type == parameters::LinearSolverType::klu)
           {
             impl.klu.factorize(matrix);
+            return;
+          }
+        if (type == parameters::LinearSolverType::cg_jacobi)
+          {
+            impl.jacobi.initialize(matrix);
             return;
           }
         impl.all = complete_index_set(matrix.m());
@@ -630,6 +638,8 @@ namespace ndda
         impl.klu.solve(x, b);
         return 1;
       }
+    if (type == parameters::LinearSolverType::cg_jacobi)
+      return impl.jacobi.solve(x, b, tolerance);
     TrilinosWrappers::MPI::Vector tx(impl.all, MPI_COMM_SELF),
       tb(impl.all, MPI_COMM_SELF);
     for (unsigned int i = 0; i < b.size(); ++i)

@@ -55,7 +55,8 @@ namespace ndda
     set_rigid_body_modes(const std::vector<Point<2>>     &location,
                          const std::vector<unsigned int> &component);
 
-    /** Prepare for solves with @p matrix (kept by reference for CG). */
+    /** Prepare for solves with @p matrix (kept by reference for CG-Jacobi,
+     * copied for CG-AMG). */
     void
     factorize(const SparseMatrix<double> &matrix);
 

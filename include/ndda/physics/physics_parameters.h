@@ -38,6 +38,9 @@ namespace ndda
       umfpack,
       klu,
       cg_amg,
+      /// CG (BiCGStab where non-symmetric) with the inverse diagonal as
+      /// preconditioner, on ndda's matrix itself (JacobiCG).
+      cg_jacobi,
       /// MUMPS (through Trilinos' Amesos) on the processes of the run.
       mumps
     };
