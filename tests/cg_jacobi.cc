@@ -17,8 +17,16 @@
 //    matrix non-symmetric, so BiCGStab. The same contacts slide in every
 //    step, and the block's displacement and velocity agree with the direct
 //    solver's to 1e-9 relative.
+// 3. The solver alone on a small matrix that is neither symmetric nor has
+//    a positive diagonal (contact springs with friction can make a
+//    diagonal entry negative, as in the default scene): BiCGStab reaches
+//    the tolerance, and CG solves the symmetric positive definite part.
 
 #include <deal.II/base/multithread_info.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <ndda/physics/cg_jacobi.h>
 
 #include "tests.h"
 
@@ -130,5 +138,48 @@ main(int argc, char **argv)
   check(block_cg.sliding == block_direct.sliding,
         "CG-Jacobi's sliding contacts against direct's");
   check(block_difference < 1e-9, "CG-Jacobi against direct on the block");
+
+  // 3. A tridiagonal matrix 4, -1, -1 of 50 rows; then one diagonal entry
+  // negative and one entry off the symmetry.
+  const unsigned int     n = 50;
+  DynamicSparsityPattern dsp(n, n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = (i > 0 ? i - 1 : 0); j < std::min(n, i + 2); ++j)
+      dsp.add(i, j);
+  SparsityPattern pattern;
+  pattern.copy_from(dsp);
+  SparseMatrix<double> matrix(pattern);
+  Vector<double>       b(n), x, residual(n);
+  for (unsigned int i = 0; i < n; ++i)
+    {
+      matrix.set(i, i, 4.);
+      if (i > 0)
+        matrix.set(i, i - 1, -1.);
+      if (i + 1 < n)
+        matrix.set(i, i + 1, -1.);
+      b[i] = 1. + 0.1 * i;
+    }
+  const auto relative_residual = [&]() {
+    matrix.residual(residual, x, b);
+    return residual.l2_norm() / b.l2_norm();
+  };
+  ndda::JacobiCG solver;
+  solver.initialize(matrix);
+  const unsigned int spd_iterations = solver.solve(x, b, 1e-12);
+  const double       spd_residual   = relative_residual();
+  matrix.set(7, 7, -4.);
+  matrix.set(20, 21, -2.5);
+  solver.initialize(matrix);
+  const unsigned int other_iterations = solver.solve(x, b, 1e-12);
+  const double       other_residual   = relative_residual();
+  std::cout << "50 rows: symmetric positive definite, CG "
+            << (spd_residual <= 1e-12 ? "reaches" : "MISSES")
+            << " 1e-12; a negative diagonal entry and an entry off the "
+               "symmetry, BiCGStab "
+            << (other_residual <= 1e-12 ? "reaches" : "MISSES") << " 1e-12"
+            << std::endl;
+  check(spd_iterations > 0 && spd_residual <= 1e-12, "CG on the SPD matrix");
+  check(other_iterations > 0 && other_residual <= 1e-12,
+        "BiCGStab on the indefinite, non-symmetric matrix");
   return 0;
 }

@@ -16,17 +16,18 @@ namespace ndda
     this->matrix  = &matrix;
     auto &inverse = inverse_diagonal.get_vector();
     inverse.reinit(matrix.m(), true);
+    // CG where the matrix is symmetric with a positive diagonal (a
+    // diagonal entry that is not positive means it is not positive
+    // definite); BiCGStab where not, scaled by the diagonal's inverse
+    // wherever the diagonal is not zero.
+    bool positive = true;
     for (types::global_dof_index i = 0; i < matrix.m(); ++i)
       {
         const double a = matrix.diag_element(i);
-        AssertThrow(a > 0.,
-                    ExcMessage("Control/Linear solver: CG-Jacobi needs a "
-                               "positive diagonal, but the system's row " +
-                               std::to_string(i) + " has " + std::to_string(a) +
-                               " there. Use direct or UMFPACK."));
-        inverse[i] = 1. / a;
+        positive       = positive && a > 0.;
+        inverse[i]     = (a != 0. ? 1. / a : 1.);
       }
-    symmetric = is_symmetric(matrix);
+    symmetric = positive && is_symmetric(matrix);
   }
 
 
@@ -63,7 +64,7 @@ namespace ndda
                       std::string("Control/Linear solver: CG-Jacobi (") +
                       (symmetric ? "CG" :
                                    "BiCGStab, the matrix being "
-                                   "non-symmetric") +
+                                   "non-symmetric or indefinite") +
                       ") did not converge in " + std::to_string(exc.last_step) +
                       " iterations (residual " +
                       std::to_string(exc.last_residual) + " against " +

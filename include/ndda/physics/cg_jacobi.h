@@ -13,12 +13,13 @@ namespace ndda
   /**
    * `Linear solver = CG-Jacobi`: conjugate gradients on ndda's own matrix,
    * preconditioned by its inverse diagonal; BiCGStab where sliding friction
-   * makes the matrix non-symmetric. Nothing is copied or factorized: the
-   * solver keeps a pointer to the matrix and one vector, so its memory is
-   * the matrix's and five vectors' (the least of ndda's solvers; the one
-   * that lets a 1e7-DoF continuum fit a 24 GB machine, doc/performance.md).
-   * The matrix-vector products and vector operations run on deal.II's
-   * threads, with the same result for any number of threads.
+   * makes the matrix non-symmetric (or a diagonal entry is not positive).
+   * Nothing is copied or factorized: the solver keeps a pointer to the matrix
+   * and one vector, so its memory is the matrix's and five vectors' (the least
+   * of ndda's solvers; the one that lets a 1e7-DoF continuum fit a 24 GB
+   * machine, doc/performance.md). The matrix-vector products and vector
+   * operations run on deal.II's threads, with the same result for any number of
+   * threads.
    *
    * Its iterations grow with the square root of the condition number of
    * the diagonally scaled matrix. In a dynamic analysis (`K + c M`) that
@@ -35,8 +36,8 @@ namespace ndda
   public:
     /**
      * Solve with @p matrix from now on (kept by pointer: it must not move
-     * or change until the next initialize()). Throws ExcMessage naming the
-     * row if a diagonal entry is not positive.
+     * or change until the next initialize()): with CG if it is symmetric
+     * and its diagonal positive, else with BiCGStab.
      */
     void
     initialize(const SparseMatrix<double> &matrix);
