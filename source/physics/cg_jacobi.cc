@@ -70,8 +70,9 @@ namespace ndda
                       std::to_string(exc.last_residual) + " against " +
                       std::to_string(control.tolerance()) +
                       "). Its iterations grow with the time step over the "
-                      "time a wave takes to cross an element: use a "
-                      "shorter time step, CG-AMG or direct."));
+                      "time a wave takes to cross an element, and with "
+                      "stiff contact springs: use a shorter time step, "
+                      "CG-AMG (without friction) or direct."));
       }
     return control.last_step();
   }
