@@ -339,6 +339,40 @@ namespace ndda
       error = Utilities::MPI::broadcast(communicator, error, 0);
       AssertThrow(error.empty(), ExcMessage(error));
     }
+
+
+
+    /**
+     * GMRES on @p matrix x = b from x = 0, preconditioned on the right by
+     * @p preconditioner (a solve with an earlier factorization), to the
+     * residual @p tolerance |b| within @p min_iterations, or within
+     * @p max_iterations while its mean rate promises to get there
+     * (internal::ReuseControl). Returns the iterations (at least 1), or 0
+     * if it did not get there.
+     */
+    template <class Preconditioner>
+    unsigned int
+    gmres_with(internal::ReuseGMRES       &gmres,
+               internal::ReuseControl     &control,
+               const SparseMatrix<double> &matrix,
+               Vector<double>             &x,
+               const Vector<double>       &b,
+               const Preconditioner       &preconditioner,
+               const unsigned int          min_iterations,
+               const unsigned int          max_iterations,
+               const double                tolerance)
+    {
+      x.reinit(b.size());
+      const double norm = b.l2_norm();
+      if (norm == 0.)
+        return 1;
+      // Right preconditioning: GMRES then watches the true residual.
+      control.reset(max_iterations, min_iterations, tolerance, norm);
+      if (!gmres.solve(
+            matrix, x, b, preconditioner, control, max_iterations + 2))
+        return 0;
+      return std::max(1u, control.last_step());
+    }
   } // namespace
 
 
@@ -549,25 +583,20 @@ namespace ndda
                                                   -1;
     if (min_iterations == 0 || factorized != n)
       return 0;
-    x.reinit(b.size());
-    const double norm = b.l2_norm();
-    if (norm == 0.)
-      return 1;
-    const unsigned int max_iterations = reuse_limit(min_iterations);
-    // Right preconditioning: GMRES then watches the true residual.
-    auto &control = impl.reuse_control;
-    control.reset(max_iterations, min_iterations, tolerance, norm);
-    const bool converged =
-      cholesky ?
-        impl.gmres.solve(
-          matrix, x, b, impl.cholesky, control, max_iterations + 2) :
-      umfpack ?
-        impl.gmres.solve(
-          matrix, x, b, impl.umfpack, control, max_iterations + 2) :
-        impl.gmres.solve(matrix, x, b, impl.klu, control, max_iterations + 2);
-    if (!converged)
-      return 0;
-    return std::max(1u, control.last_step());
+    const auto run = [&](const auto &preconditioner) {
+      return gmres_with(impl.gmres,
+                        impl.reuse_control,
+                        matrix,
+                        x,
+                        b,
+                        preconditioner,
+                        min_iterations,
+                        reuse_limit(min_iterations),
+                        tolerance);
+    };
+    return cholesky ? run(impl.cholesky) :
+           umfpack  ? run(impl.umfpack) :
+                      run(impl.klu);
   }
 
 
@@ -595,21 +624,16 @@ namespace ndda
     if (min_iterations == 0 || distributed->size() != matrix.m() ||
         solves_per_factorization() == 0.)
       return 0;
-    x.reinit(b.size());
-    const double norm = b.l2_norm();
-    if (norm == 0.)
-      return 1;
-    auto              &impl           = *implementation;
-    const unsigned int max_iterations = reuse_limit(min_iterations);
-    impl.reuse_control.reset(max_iterations, min_iterations, tolerance, norm);
-    if (!impl.gmres.solve(matrix,
-                          x,
-                          b,
-                          Preconditioner{distributed.get()},
-                          impl.reuse_control,
-                          max_iterations + 2))
-      return 0;
-    return std::max(1u, impl.reuse_control.last_step());
+    auto &impl = *implementation;
+    return gmres_with(impl.gmres,
+                      impl.reuse_control,
+                      matrix,
+                      x,
+                      b,
+                      Preconditioner{distributed.get()},
+                      min_iterations,
+                      reuse_limit(min_iterations),
+                      tolerance);
   }
 
 
