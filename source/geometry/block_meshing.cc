@@ -542,6 +542,27 @@ namespace ndda
           for (const unsigned int c : hilbert_order(centroids))
             ordered.push_back(mesh.triangles[c]);
           mesh.triangles.swap(ordered);
+          // The vertices in the order these cells first meet them: a pass
+          // over the cells then reads the vertices nearly in order too.
+          std::vector<unsigned int> new_index(
+            mesh.vertices.size(), dealii::numbers::invalid_unsigned_int);
+          std::vector<dealii::Point<2>> vertices;
+          vertices.reserve(mesh.vertices.size());
+          for (auto &t : mesh.triangles)
+            for (unsigned int &v : t)
+              {
+                if (new_index[v] == dealii::numbers::invalid_unsigned_int)
+                  {
+                    new_index[v] = vertices.size();
+                    vertices.push_back(mesh.vertices[v]);
+                  }
+                v = new_index[v];
+              }
+          mesh.vertices.swap(vertices);
+          for (Edge &e : cracks)
+            e = {{std::min(new_index[e[0]], new_index[e[1]]),
+                  std::max(new_index[e[0]], new_index[e[1]])}};
+          std::sort(cracks.begin(), cracks.end());
           return mesh;
         }
       } // namespace
