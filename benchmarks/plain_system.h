@@ -169,13 +169,28 @@ namespace plain_system
     double         peak_rss       = 0;
     Vector<double> solution;
     /// ndda's LinearSolver with ndda's settings: factorization (including
-    /// the copy to the solver's arrays), solve, one more solve, and the
+    /// the copy to the solver's arrays), the first solve, the mean, the
+    /// fastest and the slowest of n_matched_resolves more solves, and the
     /// relative l2 difference of its solution to SparseDirectUMFPACK's.
     double matched_factorize_time = 0;
     double matched_solve_time     = 0;
     double matched_resolve_time   = 0;
+    double matched_resolve_min    = 0;
+    double matched_resolve_max    = 0;
     double matched_difference     = 0;
   };
+
+  /**
+   * The re-solves that the matched back-substitution is the mean of. One
+   * back-substitution spreads by about 50 % from run to run on the
+   * reference machine (doc/performance.md, "Vertices in the order of the
+   * cells"), as ndda's steps do; ndda's side is the mean of its steady
+   * steps, so this side is a mean too. The re-solves follow each other,
+   * so that a small system's factors stay in the caches, as they do
+   * within ndda's steps (at 1e4 DoFs ndda's own solve in a step takes
+   * what a re-solve from the caches does, a third of one from memory).
+   */
+  constexpr unsigned int n_matched_resolves = 10;
 
   /**
    * Factorize and solve @p matrix x = @p rhs with ndda's own LinearSolver
@@ -197,14 +212,24 @@ namespace plain_system
     result.matched_factorize_time = seconds_since(start);
 
     Vector<double> x(matrix.m());
-    for (double *time :
-         {&result.matched_solve_time, &result.matched_resolve_time})
+    start = Clock::now();
+    solver.solve(x, rhs);
+    constraints.distribute(x);
+    result.matched_solve_time = seconds_since(start);
+    std::vector<double> resolves;
+    for (unsigned int r = 0; r < n_matched_resolves; ++r)
       {
         start = Clock::now();
         solver.solve(x, rhs);
         constraints.distribute(x);
-        *time = seconds_since(start);
+        resolves.push_back(seconds_since(start));
       }
+    result.matched_resolve_time =
+      std::accumulate(resolves.begin(), resolves.end(), 0.) / resolves.size();
+    result.matched_resolve_min =
+      *std::min_element(resolves.begin(), resolves.end());
+    result.matched_resolve_max =
+      *std::max_element(resolves.begin(), resolves.end());
     x -= result.solution;
     result.matched_difference = x.l2_norm() / result.solution.l2_norm();
   }

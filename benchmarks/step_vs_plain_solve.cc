@@ -33,7 +33,16 @@
  *   iterative refinement, where SparseDirectUMFPACK uses UMFPACK's
  *   defaults, whose iterative refinement costs at least one extra residual
  *   per solve). The "matched" columns compare ndda with this, so that
- *   solver settings and ndda's own overhead can be told apart.
+ *   solver settings and ndda's own overhead can be told apart. The
+ *   "matched re-solve", against which the steady step is judged (issue
+ *   19: at most 1.5 times), is the mean of
+ *   plain_system::n_matched_resolves back-substitutions after the first
+ *   solve, as the steady step is the mean of several steps;
+ * - ndda's own linear solve inside its steady steps (its timer's
+ *   "linear solve" less "factorize": here one back-substitution of the
+ *   same matrix a step), and the steady step over it ("per-step/own
+ *   solve"): what ndda's own work adds to the solve under the cache state
+ *   of a real step.
  *
  * The comparison is only fair if both solve the same system. With zero
  * initial velocity, no initial stress and constant loads f, ndda's first
@@ -141,7 +150,10 @@ main(int argc, char **argv)
           std::vector<double> steady;
           unsigned int        n_dofs = 0, n_cells = 0, n_factorizations = 0;
           double              ndda_peak_rss = 0;
-          auto matched_type = ndda::parameters::LinearSolverType::umfpack;
+          // ndda's own linear solves in the steady steps (timer sections
+          // "linear solve" less "factorize"), per step.
+          double ndda_step_solve = 0;
+          auto   matched_type    = ndda::parameters::LinearSolverType::umfpack;
           {
             ParameterHandler             prm;
             ndda::parameters::Parameters parameters;
@@ -164,14 +176,22 @@ main(int argc, char **argv)
 
             start = Clock::now();
             simulator.do_time_step();
-            first_step = seconds_since(start);
-            ndda_first = simulator.get_displacement();
+            first_step               = seconds_since(start);
+            ndda_first               = simulator.get_displacement();
+            const auto &timer        = simulator.get_timer();
+            const auto  solve_so_far = [&timer]() {
+              return timer.section_time("linear solve") -
+                     timer.section_time("factorize");
+            };
+            const double solve_before = solve_so_far();
             for (unsigned int s = 0; s < n_steady_steps(); ++s)
               {
                 start = Clock::now();
                 simulator.do_time_step();
                 steady.push_back(seconds_since(start));
               }
+            ndda_step_solve =
+              (solve_so_far() - solve_before) / n_steady_steps();
             n_factorizations = simulator.n_factorizations();
             ndda_peak_rss    = status_bytes("VmHWM");
             if (std::getenv("NDDA_TIMER_TABLE") != nullptr)
@@ -187,7 +207,9 @@ main(int argc, char **argv)
                     << *std::min_element(steady.begin(), steady.end()) << " / "
                     << mean_step << " / "
                     << *std::max_element(steady.begin(), steady.end())
-                    << " s, factorizations " << n_factorizations << std::endl;
+                    << " s, factorizations " << n_factorizations
+                    << ", linear solve in a steady step " << ndda_step_solve
+                    << " s" << std::endl;
 
           // The plain solve on the same mesh.
           reset_peak_rss();
@@ -211,9 +233,11 @@ main(int argc, char **argv)
                     << std::endl
                     << "  plain, ndda's solver as ndda calls it: factorize "
                     << plain.matched_factorize_time << " s, solve "
-                    << plain.matched_solve_time << " s, re-solve "
-                    << plain.matched_resolve_time
-                    << " s, difference to SparseDirectUMFPACK "
+                    << plain.matched_solve_time << " s, re-solve (mean of "
+                    << n_matched_resolves << ") " << plain.matched_resolve_time
+                    << " s (min " << plain.matched_resolve_min << ", max "
+                    << plain.matched_resolve_max << " s)"
+                    << ", difference to SparseDirectUMFPACK "
                     << plain.matched_difference << std::endl
                     << "  |d_ndda - d_plain| / |d_plain| = "
                     << relative_difference
@@ -230,6 +254,8 @@ main(int argc, char **argv)
             ratios[key + "first_matched"].push_back(first_step / matched_total);
             ratios[key + "step_matched"].push_back(mean_step /
                                                    plain.matched_resolve_time);
+            ratios[key + "step_own_solve"].push_back(mean_step /
+                                                     ndda_step_solve);
           }
           timing.add_value("n_dofs", n_dofs);
           timing.add_value("ndda first step (s)", first_step);
@@ -242,6 +268,7 @@ main(int argc, char **argv)
           timing.add_value("first/matched", first_step / matched_total);
           timing.add_value("per-step/matched re-solve",
                            mean_step / plain.matched_resolve_time);
+          timing.add_value("per-step/own solve", mean_step / ndda_step_solve);
           timing.add_value("peak RSS (MB)", ndda_peak_rss / 1e6);
           timing.add_value("bytes/DoF", bytes_per_dof);
           timing.add_value("rel. l2 diff", relative_difference);
@@ -254,6 +281,7 @@ main(int argc, char **argv)
           detail.add_value("ndda steady max (s)",
                            *std::max_element(steady.begin(), steady.end()));
           detail.add_value("ndda factorizations", n_factorizations);
+          detail.add_value("ndda solve per steady step (s)", ndda_step_solve);
           detail.add_value("plain setup (s)", plain.setup_time);
           detail.add_value("plain assembly (s)", plain.assembly_time);
           detail.add_value("plain factorize (s)", plain.factorize_time);
@@ -264,6 +292,10 @@ main(int argc, char **argv)
                            plain.matched_factorize_time);
           detail.add_value("matched solve (s)", plain.matched_solve_time);
           detail.add_value("matched re-solve (s)", plain.matched_resolve_time);
+          detail.add_value("matched re-solve min (s)",
+                           plain.matched_resolve_min);
+          detail.add_value("matched re-solve max (s)",
+                           plain.matched_resolve_max);
         }
 
       for (const auto &column : {"ndda first step (s)",
@@ -274,7 +306,8 @@ main(int argc, char **argv)
                                  "per-step/plain",
                                  "per-step/plain re-solve",
                                  "first/matched",
-                                 "per-step/matched re-solve"})
+                                 "per-step/matched re-solve",
+                                 "per-step/own solve"})
         timing.set_precision(column, 3);
       timing.set_precision("peak RSS (MB)", 1);
       timing.set_precision("bytes/DoF", 0);
@@ -283,6 +316,7 @@ main(int argc, char **argv)
       for (const auto &column : {"ndda setup (s)",
                                  "ndda steady min (s)",
                                  "ndda steady max (s)",
+                                 "ndda solve per steady step (s)",
                                  "plain setup (s)",
                                  "plain assembly (s)",
                                  "plain factorize (s)",
@@ -290,7 +324,9 @@ main(int argc, char **argv)
                                  "plain re-solve (s)",
                                  "matched factorize (s)",
                                  "matched solve (s)",
-                                 "matched re-solve (s)"})
+                                 "matched re-solve (s)",
+                                 "matched re-solve min (s)",
+                                 "matched re-solve max (s)"})
         detail.set_precision(column, 4);
       detail.set_precision("plain peak RSS (MB)", 1);
       std::cout << std::endl;
@@ -314,10 +350,13 @@ main(int argc, char **argv)
             std::cout << "@value " << key.substr(0, key.size() - 11)
                       << "first_met " << (median <= 1.2 ? "met" : "**NOT met**")
                       << std::endl;
-          // Issue 19: a steady step <= 1.5 x a matched back-substitution.
-          if (key.size() > 12 && key.substr(key.size() - 12) == "step_matched")
-            std::cout << "@value " << key << "_met "
-                      << (median <= 1.5 ? "met" : "**NOT met**") << std::endl;
+          // Issue 19: a steady step <= 1.5 x a matched back-substitution,
+          // the plain program's or ndda's own within its steps.
+          for (const std::string yardstick : {"step_matched", "step_own_solve"})
+            if (key.size() > yardstick.size() &&
+                key.substr(key.size() - yardstick.size()) == yardstick)
+              std::cout << "@value " << key << "_met "
+                        << (median <= 1.5 ? "met" : "**NOT met**") << std::endl;
         }
       std::cout << "@value step_vs_plain_solve.repeats "
                 << std::max(repeats, 1u) << std::endl;

@@ -566,7 +566,7 @@ namespace ndda
     if (in_frame)
       frames->to_frame(b);
 
-    const auto section = scope(timer, "solve");
+    const auto section = scope(timer, "linear solve");
     // d = d_h + d_g: d_g carries the prescribed values, d_h satisfies the
     // homogeneous lines (of the exact constraints, and of the reduced
     // blocks with either method).
