@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
 
 #include <ndda/physics/cholesky.h>
 #include <ndda/physics/suitesparse_setup.h>
+#include <ndda/physics/supernodal_solve.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,9 +57,6 @@ namespace ndda
     ~Implementation()
     {
       free_factor();
-      for (cholmod_dense **dense : {&x, &y, &e})
-        if (*dense != nullptr)
-          cholmod_l_free_dense(dense, &common);
       cholmod_l_finish(&common);
     }
 
@@ -105,31 +104,32 @@ namespace ndda
     {
       AssertThrow(factor != nullptr && b.size() == p.size() - 1,
                   ExcMessage("CHOLMOD: no factorization of this size."));
-      cholmod_dense rhs = {};
-      rhs.nrow          = b.size();
-      rhs.ncol          = 1;
-      rhs.nzmax         = b.size();
-      rhs.d             = b.size();
-      rhs.x             = const_cast<double *>(b.begin());
-      rhs.xtype         = CHOLMOD_REAL;
-      rhs.dtype         = CHOLMOD_DOUBLE;
-      AssertThrow(
-        cholmod_l_solve2(
-          CHOLMOD_A, factor, &rhs, nullptr, &x, nullptr, &y, &e, &common),
-        ExcMessage("CHOLMOD: the solve failed with status " +
-                   std::to_string(common.status) + "."));
       result.reinit(b.size(), true);
-      const double *solution = static_cast<const double *>(x->x);
-      std::copy(solution, solution + b.size(), result.begin());
+      substitution.solve(result.begin(), b.begin());
+    }
+
+    /// The substitutions with the factor, on threads.
+    void
+    set_up_substitution()
+    {
+      SupernodalSolve::Factor f;
+      f.n      = factor->n;
+      f.nsuper = factor->nsuper;
+      f.super  = static_cast<const long *>(factor->super);
+      f.pi     = static_cast<const long *>(factor->pi);
+      f.px     = static_cast<const long *>(factor->px);
+      f.s      = static_cast<const long *>(factor->s);
+      f.perm   = static_cast<const long *>(factor->Perm);
+      f.x      = static_cast<const double *>(factor->x);
+      substitution.initialize(f, MultithreadInfo::n_threads());
     }
 
     cholmod_common                common;
     cholmod_factor               *factor = nullptr;
+    SupernodalSolve               substitution;
     std::vector<SuiteSparse_long> p, i;
     std::vector<double>           values;
-    /// CHOLMOD's solve workspace, kept from solve to solve.
-    cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
-    double         solve_ratio = 0;
+    double                        solve_ratio = 0;
     /// Whether the last factorization with this pattern found the matrix
     /// not positive definite.
     bool refused = false;
@@ -179,6 +179,11 @@ namespace ndda
     // those of a solve: 2 nnz(L) multiply-adds, and a product with A.
     impl.solve_ratio =
       impl.common.fl / (2. * (2. * impl.common.lnz + 2. * impl.i.size()));
+    AssertThrow(impl.factor->is_super && impl.factor->is_ll &&
+                  impl.factor->xtype == CHOLMOD_REAL,
+                ExcMessage("CHOLMOD: the factor is not a real supernodal "
+                           "L L^T."));
+    impl.set_up_substitution();
     return true;
   }
 
@@ -195,8 +200,7 @@ namespace ndda
   void
   CholeskyFactorization::vmult(Vector<double> &x, const Vector<double> &b) const
   {
-    // CHOLMOD's solve does not change the factorization; its interface
-    // just does not say const.
+    // The substitutions keep their workspace in the implementation.
     implementation->solve(x, b);
   }
 
@@ -215,5 +219,13 @@ namespace ndda
   CholeskyFactorization::solves_per_factorization() const
   {
     return implementation->solve_ratio;
+  }
+
+
+
+  std::size_t
+  CholeskyFactorization::n_parallel_subtrees() const
+  {
+    return implementation->substitution.n_subtrees();
   }
 } // namespace ndda

@@ -24,6 +24,11 @@ namespace ndda
    * AMD, or METIS where AMD fills much) depends on the sparsity pattern
    * alone and is kept while it stays.
    *
+   * The forward and backward substitutions are ndda's own
+   * (SupernodalSolve, on deal.II's threads, the same to the bit on any
+   * number of them), not CHOLMOD's cholmod_solve, which runs on one
+   * (doc/performance.md, "The substitutions on threads").
+   *
    * @ingroup physics
    */
   class CholeskyFactorization
@@ -60,6 +65,11 @@ namespace ndda
      * with A (as LinearSolver::solves_per_factorization()). */
     double
     solves_per_factorization() const;
+
+    /** The subtrees of the factor's tree that the substitutions run on
+     * threads (SupernodalSolve), 0 if they run on one. */
+    std::size_t
+    n_parallel_subtrees() const;
 
   private:
     struct Implementation;
