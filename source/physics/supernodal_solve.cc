@@ -35,7 +35,6 @@ namespace ndda
     subtree_first.clear();
     subtree_last.clear();
     subtree_thread.clear();
-    fraction = 0;
     y.resize(L.n);
     buffer.resize(n_threads);
 
@@ -123,7 +122,6 @@ namespace ndda
       {
         subtree_first.push_back(first[candidates[i]]);
         subtree_last.push_back(candidates[i]);
-        fraction += subtree_work[candidates[i]] / total;
       }
     std::vector<unsigned int> thread(subtree_thread.size());
     for (std::size_t j = 0; j < order.size(); ++j)
@@ -138,14 +136,6 @@ namespace ndda
   SupernodalSolve::n_subtrees() const
   {
     return subtree_first.size();
-  }
-
-
-
-  double
-  SupernodalSolve::parallel_fraction() const
-  {
-    return fraction;
   }
 
 

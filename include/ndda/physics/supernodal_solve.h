@@ -68,11 +68,9 @@ namespace ndda
     void
     solve(double *x, const double *b) const;
 
-    /** The subtrees run on threads, and their share of the work. */
+    /** The number of subtrees run on threads, 0 on one thread. */
     std::size_t
     n_subtrees() const;
-    double
-    parallel_fraction() const;
 
   private:
     void
@@ -88,7 +86,6 @@ namespace ndda
     std::vector<long>         subtree_first, subtree_last;
     std::vector<unsigned int> subtree_thread;
     unsigned int              n_threads = 1;
-    double                    fraction  = 0;
     /// Workspace: the permuted vector, each subtree's contributions to
     /// rows outside it, a buffer per thread.
     mutable std::vector<double>                               y;
