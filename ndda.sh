@@ -32,6 +32,15 @@ build_dir="${NDDA_BUILD_DIR:-$here/build}"
 jobs="${NDDA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 build_type="${NDDA_BUILD_TYPE:-Release}"
 
+# OpenBLAS's Haswell kernels on every CPU that has AVX2 and FMA, whatever
+# kernels it would pick (SkylakeX on an Intel CPU with AVX-512): results
+# the same to the bit on AMD and Intel machines (CMakeLists.txt, which
+# does the same for ctest). An OPENBLAS_CORETYPE already set is kept.
+if [ -z "${OPENBLAS_CORETYPE:-}" ] && grep -qw avx2 /proc/cpuinfo 2>/dev/null &&
+  grep -qw fma /proc/cpuinfo; then
+  export OPENBLAS_CORETYPE=Haswell
+fi
+
 # Debian packages ndda needs to build and test. libopenblas0-serial:
 # OpenBLAS (single-threaded), which Debian then makes the system's BLAS
 # (update-alternatives); UMFPACK's factorization runs 3-5 times faster on
