@@ -154,7 +154,35 @@ namespace ndda
     const long   *rows   = L.s + L.pi[s];
     const double *block  = L.x + L.px[s];
     double       *y1     = y.data() + k1;
-    for (long j = 0; j < n_columns; ++j)
+    // Four columns at a time: each row still takes the columns' terms
+    // one after the other, in column order (the same round-off as one
+    // column at a time), and is loaded and stored once per four.
+    long j = 0;
+    for (; j + 4 <= n_columns; j += 4)
+      {
+        const double *c0 = block + j * n_rows, *c1 = c0 + n_rows,
+                     *c2 = c1 + n_rows, *c3 = c2 + n_rows;
+        // The 4 x 4 triangle on the diagonal, column by column.
+        for (long k = 0; k < 4; ++k)
+          {
+            const double *column = c0 + k * n_rows;
+            y1[j + k] /= column[j + k];
+            for (long i = j + k + 1; i < j + 4; ++i)
+              y1[i] -= column[i] * y1[j + k];
+          }
+        const double y_0 = y1[j], y_1 = y1[j + 1], y_2 = y1[j + 2],
+                     y_3 = y1[j + 3];
+        for (long i = j + 4; i < n_columns; ++i)
+          {
+            double t = y1[i];
+            t -= c0[i] * y_0;
+            t -= c1[i] * y_1;
+            t -= c2[i] * y_2;
+            t -= c3[i] * y_3;
+            y1[i] = t;
+          }
+      }
+    for (; j < n_columns; ++j)
       {
         const double *column = block + j * n_rows;
         y1[j] /= column[j];
@@ -166,12 +194,30 @@ namespace ndda
     if (n_below == 0)
       return;
     e.assign(n_below, 0.);
-    for (long j = 0; j < n_columns; ++j)
+    double *const sum = e.data();
+    j                 = 0;
+    for (; j + 4 <= n_columns; j += 4)
+      {
+        const double *c0 = block + j * n_rows + n_columns, *c1 = c0 + n_rows,
+                     *c2 = c1 + n_rows, *c3 = c2 + n_rows;
+        const double y_0 = y1[j], y_1 = y1[j + 1], y_2 = y1[j + 2],
+                     y_3 = y1[j + 3];
+        for (long i = 0; i < n_below; ++i)
+          {
+            double t = sum[i];
+            t += c0[i] * y_0;
+            t += c1[i] * y_1;
+            t += c2[i] * y_2;
+            t += c3[i] * y_3;
+            sum[i] = t;
+          }
+      }
+    for (; j < n_columns; ++j)
       {
         const double *column = block + j * n_rows + n_columns;
         const double  yj     = y1[j];
         for (long i = 0; i < n_below; ++i)
-          e[i] += column[i] * yj;
+          sum[i] += column[i] * yj;
       }
     const long *below = rows + n_columns;
     long        i     = 0;
@@ -197,22 +243,50 @@ namespace ndda
     gathered.resize(n_below);
     for (long i = 0; i < n_below; ++i)
       gathered[i] = y[below[i]];
-    for (long j = n_columns - 1; j >= 0; --j)
+    const double *g = gathered.data();
+    // Each column's sum over the rows below in four partial sums, in a
+    // fixed order: the same round-off every time, without one chain of
+    // dependent additions. Those sums do not depend on y1, so four
+    // columns take them in one pass over the gathered values; then each
+    // column, from the last, adds its terms in the diagonal block and is
+    // solved for.
+    const long n_whole = n_below - n_below % 4;
+    const auto finish  = [&](const long j, double *t) {
+      const double *column = block + j * n_rows;
+      const double *lower  = column + n_columns;
+      for (long i = n_whole; i < n_below; ++i)
+        t[0] += lower[i] * g[i];
+      for (long k = j + 1; k < n_columns; ++k)
+        t[1] += column[k] * y1[k];
+      y1[j] = (y1[j] - ((t[0] + t[1]) + (t[2] + t[3]))) / column[j];
+    };
+    long j = n_columns - 1;
+    for (; j >= 3; j -= 4)
       {
-        const double *column = block + j * n_rows;
-        // Four partial sums in a fixed order: the same round-off every
-        // time, without one chain of dependent additions.
-        double        t[4]  = {0., 0., 0., 0.};
-        const double *lower = column + n_columns;
-        long          i     = 0;
-        for (; i + 4 <= n_below; i += 4)
+        // Columns j, j - 1, j - 2, j - 3.
+        const double *l0 = block + j * n_rows + n_columns, *l1 = l0 - n_rows,
+                     *l2 = l1 - n_rows, *l3 = l2 - n_rows;
+        double t[4][4] = {};
+        for (long i = 0; i < n_whole; i += 4)
           for (unsigned int r = 0; r < 4; ++r)
-            t[r] += lower[i + r] * gathered[i + r];
-        for (; i < n_below; ++i)
-          t[0] += lower[i] * gathered[i];
-        for (long k = j + 1; k < n_columns; ++k)
-          t[1] += column[k] * y1[k];
-        y1[j] = (y1[j] - ((t[0] + t[1]) + (t[2] + t[3]))) / column[j];
+            {
+              const double gi = g[i + r];
+              t[0][r] += l0[i + r] * gi;
+              t[1][r] += l1[i + r] * gi;
+              t[2][r] += l2[i + r] * gi;
+              t[3][r] += l3[i + r] * gi;
+            }
+        for (unsigned int k = 0; k < 4; ++k)
+          finish(j - k, t[k]);
+      }
+    for (; j >= 0; --j)
+      {
+        const double *lower = block + j * n_rows + n_columns;
+        double        t[4]  = {0., 0., 0., 0.};
+        for (long i = 0; i < n_whole; i += 4)
+          for (unsigned int r = 0; r < 4; ++r)
+            t[r] += lower[i + r] * g[i + r];
+        finish(j, t);
       }
   }
 

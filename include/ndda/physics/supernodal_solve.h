@@ -36,11 +36,16 @@ namespace ndda
    * the larger blocks, one of two runs of a scene had other results (163
    * matrix builds where every other run had 161; the serial OpenBLAS
    * that Debian ships is not known to be safe from two threads at once).
+   * They take four columns of a supernode at a time (each row still
+   * receives the columns' terms in column order: the same bits as one
+   * column at a time), so that the rows' running sums are read and
+   * written once per four columns (doc/performance.md, "Four columns at
+   * a time in the substitutions").
    * The solution agrees with cholmod_solve()'s (a BLAS triangular solve
    * and product per supernode) to round-off, not to the bit. On one
-   * thread it is about as fast at 1e4 DoFs and 15-30 % slower at 1e5;
-   * the gain is the threads (doc/performance.md, "The substitutions on
-   * threads").
+   * thread it was about as fast at 1e4 DoFs and 15-30 % slower at 1e5
+   * before the four-column kernels, which took about 7 % off; the gain
+   * is the threads (doc/performance.md, "The substitutions on threads").
    *
    * @ingroup physics
    */
