@@ -33,6 +33,32 @@ namespace ndda
   namespace
   {
     /**
+     * The cost of a factorization in GMRES iterations with it, from
+     * @p flop_ratio, the factorization's flops over those of one iteration
+     * (a solve with the factors and a product with the matrix; 0: no
+     * factorization). The flops alone misjudge it both ways
+     * (doc/performance.md, "The cost of a factorization in iterations"):
+     * a triangular solve runs at the speed of memory, while a
+     * factorization runs its flops @p flops_faster times as fast (UMFPACK's
+     * and CHOLMOD's dense fronts with BLAS-3; KLU, without BLAS, twice),
+     * and it has work beside its flops (copying the matrix, assembling the
+     * fronts, allocating the factors), about fifteen iterations' worth.
+     * The constants are fixed, not measured in the run, so that a scene
+     * takes the same decisions, and gives the same results, on every
+     * machine.
+     */
+    double
+    iterations_per_factorization(const double flop_ratio,
+                                 const double flops_faster)
+    {
+      constexpr double work_besides_flops = 15.;
+      return flop_ratio > 0. ? work_besides_flops + flop_ratio / flops_faster :
+                               0.;
+    }
+
+
+
+    /**
      * UMFPACK called directly rather than through SparseDirectUMFPACK, for
      * two reasons measured on ndda's systems: the symbolic analysis
      * (ordering) depends only on the sparsity pattern and is kept across
@@ -536,14 +562,17 @@ namespace ndda
   {
     if (distributed != nullptr)
       return distributed->solves_per_factorization();
-    if (type == parameters::LinearSolverType::direct)
-      return implementation->cholesky_active ?
-               implementation->cholesky.solves_per_factorization() :
-               implementation->umfpack.solve_ratio;
-    if (type == parameters::LinearSolverType::umfpack)
-      return implementation->umfpack.solve_ratio;
+    // Fitted to ndda's systems of 3,000-60,000 unknowns
+    // (doc/performance.md, "The cost of a factorization in iterations").
+    const auto &impl = *implementation;
+    if (type == parameters::LinearSolverType::direct && impl.cholesky_active)
+      return iterations_per_factorization(
+        impl.cholesky.solves_per_factorization(), 3.5);
+    if (type == parameters::LinearSolverType::direct ||
+        type == parameters::LinearSolverType::umfpack)
+      return iterations_per_factorization(impl.umfpack.solve_ratio, 10.);
     if (type == parameters::LinearSolverType::klu)
-      return implementation->klu.solve_ratio;
+      return iterations_per_factorization(impl.klu.solve_ratio, 2.);
     return 0;
   }
 

@@ -97,11 +97,15 @@ namespace ndda
                                      const double                tolerance);
 
     /**
-     * The cost of the last factorization (UMFPACK, KLU) against that of
-     * one iteration with it: its floating point operations over those of
-     * one solve with the factors and one product with the matrix. 0 for
-     * CG-AMG or before the first factorization. It depends on the
-     * sparsity pattern and pivot order alone.
+     * The cost of the last factorization (CHOLMOD, UMFPACK, KLU, MUMPS)
+     * in iterations with it, each one solve with the factors and one
+     * product with the matrix. For the serial solvers, fifteen iterations
+     * plus the ratio of the floating point operations divided by how much
+     * faster the factorization runs its flops (CHOLMOD 3.5, UMFPACK 10,
+     * KLU 2; doc/performance.md, "The cost of a factorization in
+     * iterations"); for MUMPS the ratio of the flops. 0 for the
+     * iterative solvers or before the first factorization. It depends on
+     * the sparsity pattern and pivot order alone.
      */
     double
     solves_per_factorization() const;
