@@ -38,7 +38,9 @@
 // 12 / courses, so that every wall has the 12-course wall's 0.06 m: the
 // same work per brick.
 //
-// The seventh argument `only` runs the largest wall alone.
+// The seventh argument `only` runs the largest wall alone. With
+// NDDA_TIMER_TABLE=1 each run's timer table (set-up and every step) goes
+// to the error stream.
 //
 // Usage: block_models [steps] [largest wall: 1, 2, 3 or 4] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
@@ -248,6 +250,8 @@ end
         simulated += simulator.get_step_report().dt;
         progress(step + s + 1, time + simulated);
       }
+    if (std::getenv("NDDA_TIMER_TABLE") != nullptr)
+      simulator.get_timer().print_summary(std::cerr);
     double total = 0;
     for (const double t : times)
       total += t;
