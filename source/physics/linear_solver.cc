@@ -158,8 +158,9 @@ namespace ndda
           (2. * (info[UMFPACK_LNZ] + info[UMFPACK_UNZ] + ai.size()));
       }
 
-      /** The cost of the last factorization in solves (see
-       * LinearSolver::solves_per_factorization()). */
+      /** The flops of the last factorization over those of a solve and
+       * a product with the matrix, which
+       * LinearSolver::solves_per_factorization() turns into a cost. */
       double solve_ratio = 0;
 
       void
@@ -268,8 +269,9 @@ namespace ndda
                                             numeric->nzoff + rows.ai.size()));
       }
 
-      /** The cost of the last factorization in solves (see
-       * LinearSolver::solves_per_factorization()). */
+      /** The flops of the last factorization over those of a solve and
+       * a product with the matrix, which
+       * LinearSolver::solves_per_factorization() turns into a cost. */
       double solve_ratio = 0;
 
       void

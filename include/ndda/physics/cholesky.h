@@ -60,9 +60,9 @@ namespace ndda
     std::size_t
     size() const;
 
-    /** The cost of the last factorization in solves: its flops over
-     * those of a forward and backward substitution with L, and a product
-     * with A (as LinearSolver::solves_per_factorization()). */
+    /** The flops of the last factorization over those of a forward and
+     * backward substitution with L and a product with A, which
+     * LinearSolver::solves_per_factorization() turns into a cost. */
     double
     solves_per_factorization() const;
 
