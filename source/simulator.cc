@@ -148,7 +148,8 @@ namespace ndda
                         fem.dof_map,
                         parameters.materials,
                         fem.cell_material,
-                        mesh.get_triangulation());
+                        mesh.get_triangulation(),
+                        &fem.owned_cells);
     stresses.reinit(mesh.get_triangulation().n_active_cells(),
                     fem.element_cache.n_quadrature_points());
     scene::set_initial_state(parameters,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// DistributedSolver (issue 19), run by ctest on two MPI processes
-// (`mpirun -np 2`), and correct on any number of them:
+// DistributedSolver and OwnedCells (issue 19), run by ctest on two MPI
+// processes (`mpirun -np 2`), and correct on any number of them:
 //
 //  1. the rows of a P1 plane-stress elasticity matrix (K + c M on a
 //     triangulated 4 x 1 rectangle, boundary fixed, 7,502 dofs) are split
@@ -18,10 +18,14 @@
 //     matrix plus a skew-symmetric part, as friction makes it) as UMFPACK
 //     does, to 1e-12;
 //  5. CG with ML's AMG and the rigid-body modes reaches a relative residual
-//     of 1e-12 in fewer than 60 iterations and agrees with CHOLMOD to 1e-9.
+//     of 1e-12 in fewer than 60 iterations and agrees with CHOLMOD to 1e-9;
+//  6. OwnedCells, the split of the cells for the per-cell work: contiguous
+//     ranges without gap or overlap, as equal as they can be, and share()
+//     gives every process every cell's values (all cells, or a list).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/tensor.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -40,6 +44,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <ndda/parallel/distributed_solver.h>
+#include <ndda/parallel/owned_cells.h>
 #include <ndda/physics/linear_solver.h>
 
 #include <iomanip>
@@ -359,5 +364,60 @@ main(int argc, char **argv)
   }
   out << "CG-AMG: relative residual 1e-12 in fewer than 60 iterations, "
       << "CHOLMOD's solution to 1e-9" << std::endl;
+
+  // 6. The cells split among the processes for the per-cell work
+  // (OwnedCells): contiguous ranges without gap or overlap, and each
+  // process's values of its cells given to all.
+  {
+    OwnedCells owned;
+    owned.set_communicator(comm);
+    const unsigned int n_cells = 1001;
+    owned.reinit(n_cells);
+    check(owned.n_cells() == n_cells, "OwnedCells splits every cell");
+    check(owned.is_split() == (n_processes > 1),
+          "the cells are split on more than one process");
+    const unsigned int n_owned = owned.end() - owned.begin();
+    check(Utilities::MPI::sum(n_owned, comm) == n_cells &&
+            Utilities::MPI::min(n_owned, comm) + 1 >=
+              Utilities::MPI::max(n_owned, comm),
+          "the ranges hold every cell once, as equal as they can be");
+    // The next process's range starts where this one's ends.
+    const auto ends         = Utilities::MPI::all_gather(comm, owned.end());
+    const auto this_process = Utilities::MPI::this_mpi_process(comm);
+    check(owned.begin() == (this_process == 0 ? 0 : ends[this_process - 1]),
+          "the ranges are contiguous");
+
+    // A value that tells the cell and the entry.
+    const auto value = [](const unsigned int c, const unsigned int i) {
+      return Tensor<1, 2>({c + 0.25 * i, -1. * c});
+    };
+    const Tensor<1, 2>        unset({-7., -7.});
+    std::vector<Tensor<1, 2>> values(n_cells * 3, unset);
+    for (unsigned int c = owned.begin(); c < owned.end(); ++c)
+      for (unsigned int i = 0; i < 3; ++i)
+        values[c * 3 + i] = value(c, i);
+    owned.share(values, 3);
+    bool all = true;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      for (unsigned int i = 0; i < 3; ++i)
+        all = all && values[c * 3 + i] == value(c, i);
+    check(all, "share(): every process has every cell's values");
+
+    // Every third cell only: the others keep what they had.
+    std::vector<unsigned int> some;
+    for (unsigned int c = 1; c < n_cells; c += 3)
+      some.push_back(c);
+    std::vector<double> scalars(n_cells, -1.);
+    for (const unsigned int c : some)
+      if (c >= owned.begin() && c < owned.end())
+        scalars[c] = c;
+    owned.share(scalars, 1, some);
+    all = true;
+    for (unsigned int c = 0; c < n_cells; ++c)
+      all = all && scalars[c] == (c % 3 == 1 ? double(c) : -1.);
+    check(all, "share() of some cells: those cells' values, no other");
+  }
+  out << "cells split among the processes without gap or overlap, their "
+      << "values shared" << std::endl;
   return 0;
 }

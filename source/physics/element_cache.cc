@@ -445,13 +445,26 @@ namespace ndda
       law->tangent_depends_on_stress() && stresses != nullptr;
     // The cells to compute, first: in most steps none has moved, and the
     // FEValues below cost more than the check.
-    const auto cells = select_cells(dof_handler,
-                                    dof_map,
-                                    only_moved_cells && !point_tangents,
-                                    tolerance,
-                                    frame_angles);
+    auto cells = select_cells(dof_handler,
+                              dof_map,
+                              only_moved_cells && !point_tangents,
+                              tolerance,
+                              frame_angles);
     if (computed_cells.empty())
       return 0;
+    // On several processes each computes the cells it owns (the same
+    // list on every process: the test above sees the same geometry).
+    const bool split = owned_cells != nullptr && owned_cells->is_split();
+    if (split)
+      {
+        owned_cells->check_size(n_cells, "ElementCache::update()");
+        const auto not_owned = [this](const auto &cell) {
+          const unsigned int c = cell->active_cell_index();
+          return c < owned_cells->begin() || c >= owned_cells->end();
+        };
+        cells.erase(std::remove_if(cells.begin(), cells.end(), not_owned),
+                    cells.end());
+      }
 
     tangents.clear();
     for (const auto &material : materials.materials)
@@ -555,6 +568,22 @@ namespace ndda
                     std::function<void(const NoCopy &)>(),
                     Scratch(mapping, fe, quadrature, mass_quadrature),
                     NoCopy());
+    if (split)
+      {
+        owned_cells->share(stiffness_values,
+                           dofs_per_cell * dofs_per_cell,
+                           computed_cells);
+        owned_cells->share(mass_values,
+                           nodes_per_cell * nodes_per_cell,
+                           computed_cells);
+        owned_cells->share(viscosity_over_density, 1, computed_cells);
+        owned_cells->share(initial_area, 1, computed_cells);
+        owned_cells->share(geometry, 1, computed_cells);
+        owned_cells->share(gradients,
+                           n_q_points * nodes_per_cell,
+                           computed_cells);
+        owned_cells->share(weights, n_q_points, computed_cells);
+      }
     return computed_cells.size();
   }
 

@@ -15,13 +15,26 @@ namespace ndda
                           const DofMap                    &dof_map,
                           const parameters::Materials     &materials,
                           const std::vector<unsigned int> &cell_material,
-                          const Triangulation<2>          &triangulation)
+                          const Triangulation<2>          &triangulation,
+                          const OwnedCells                *owned_cells)
   {
     this->element_cache = &element_cache;
     this->dof_map       = &dof_map;
     this->materials     = &materials;
     this->cell_material = &cell_material;
     this->triangulation = &triangulation;
+    this->owned_cells   = owned_cells;
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  StressField::owned_range() const
+  {
+    if (owned_cells == nullptr || !owned_cells->is_split())
+      return {0u, n_active_cells};
+    owned_cells->check_size(n_active_cells, "StressField");
+    return {owned_cells->begin(), owned_cells->end()};
   }
 
 
@@ -282,20 +295,27 @@ namespace ndda
                                Vector<double>  &force) const
   {
     // Each cell's force and energy on deal.II's threads, into arrays of
-    // their own; summed in cell order on one thread: the same sums, in
-    // the same order, however many threads there are.
+    // their own (this process's cells, then shared with the others);
+    // summed in cell order on one thread: the same sums, in the same
+    // order, however many threads and processes there are.
     const unsigned int n_local = n_points * dof_map->dofs_per_cell;
     local_forces.resize(std::size_t(n_active_cells) * n_local);
     local_energies.resize(n_active_cells);
+    const auto [first, last] = owned_range();
     parallel::apply_to_subranges(
-      0u,
-      n_active_cells,
+      first,
+      last,
       [&](const unsigned int begin, const unsigned int end) {
         for (unsigned int c = begin; c < end; ++c)
           local_energies[c] =
             cell_force_of(c, local_forces.data() + std::size_t(c) * n_local);
       },
       cell_grain_size);
+    if (owned_cells != nullptr)
+      {
+        owned_cells->share(local_forces, n_local);
+        owned_cells->share(local_energies, 1);
+      }
     force         = 0;
     double energy = 0;
     for (unsigned int c = 0; c < n_active_cells; ++c)
@@ -344,9 +364,9 @@ namespace ndda
     // the arithmetic of CrackableMesh::move_vertices()) for the force.
     // A cell writes only its own stresses.
     const std::vector<SymmetricTensor<4, 2>> compliance = compliances();
-    const auto &vertices   = triangulation->get_vertices();
-    const auto &vertex_dof = dof_map->vertex_dofs;
-    return sum_cell_forces(
+    const auto  &vertices   = triangulation->get_vertices();
+    const auto  &vertex_dof = dof_map->vertex_dofs;
+    const double energy     = sum_cell_forces(
       [&](const unsigned int c, double *local_force) {
         const unsigned int *cell_vertices = dof_map->vertices_of_cell(c);
         Stress             *sigma = stress.data() + std::size_t(c) * n_points;
@@ -369,5 +389,8 @@ namespace ndda
           c, F_end, sigma, compliance[(*cell_material)[c]], local_force);
       },
       force);
+    if (owned_cells != nullptr)
+      owned_cells->share(stress, n_points);
+    return energy;
   }
 } // namespace ndda

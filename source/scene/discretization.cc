@@ -50,6 +50,9 @@ namespace ndda
       for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
         cell_material[cell->active_cell_index()] = cell->material_id();
       dof_map.reinit(dof_handler);
+      owned_cells.set_communicator(communicator);
+      owned_cells.reinit(dof_map.n_cells());
+      element_cache.set_owned_cells(&owned_cells);
       // A crack keeps the cells (and their frames).
       if (frames.cell_angles().size() != dof_map.n_cells())
         frames.reinit(dof_map.n_cells());

@@ -14,6 +14,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ndda/mesh/refinement.h>
+#include <ndda/parallel/owned_cells.h>
 #include <ndda/physics/constitutive_law.h>
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/physics_parameters.h>
@@ -228,6 +229,19 @@ namespace ndda
     void
     set_quadratures(const Quadrature<dim> &cell_quadrature,
                     const Quadrature<dim> &mass_quadrature);
+
+    /**
+     * Share the computation of the cells in update() among the processes
+     * that @p owned_cells splits the cells among (referenced; it must
+     * split as many cells as update() is given): each process computes
+     * the cells it owns, and then every process has every cell's data.
+     * nullptr (the default): this process computes every cell.
+     */
+    void
+    set_owned_cells(const OwnedCells *owned_cells)
+    {
+      this->owned_cells = owned_cells;
+    }
 
     /**
      * (Re)compute the data of all cells, or with @p only_moved_cells only of
@@ -463,7 +477,8 @@ namespace ndda
     std::vector<unsigned int>              computed_cells;
     Quadrature<dim>                        quadrature;
     Quadrature<dim>                        mass_quadrature;
-    unsigned int                           n_q_points = 0;
+    unsigned int                           n_q_points  = 0;
+    const OwnedCells                      *owned_cells = nullptr;
   };
 } // namespace ndda
 

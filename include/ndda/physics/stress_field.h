@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <ndda/mesh/crackable_mesh.h>
+#include <ndda/parallel/owned_cells.h>
 #include <ndda/physics/dof_map.h>
 #include <ndda/physics/element_cache.h>
 #include <ndda/physics/physics_parameters.h>
@@ -38,15 +39,20 @@ namespace ndda
      * Work on the cells of @p element_cache with the dofs of @p dof_map,
      * the law and materials of @p materials, the material id of each cell
      * @p cell_material, on the present geometry of @p triangulation (its
-     * vertices move with the run). The objects are referenced, not
-     * copied.
+     * vertices move with the run). With @p owned_cells, the processes
+     * among which it splits the cells share the per-cell work of
+     * internal_force() and advance_with_internal_force() (each computes
+     * its own cells, and then every process has every cell's stresses
+     * and the whole force); without it, this process does every cell. The
+     * objects are referenced, not copied.
      */
     void
     initialize(const ElementCache<2>           &element_cache,
                const DofMap                    &dof_map,
                const parameters::Materials     &materials,
                const std::vector<unsigned int> &cell_material,
-               const Triangulation<2>          &triangulation);
+               const Triangulation<2>          &triangulation,
+               const OwnedCells                *owned_cells = nullptr);
 
     /** @p n_cells cells of @p n_points zero stresses each. */
     void
@@ -215,13 +221,20 @@ namespace ndda
      * Set @p force to the sum of every cell's force and return the sum of
      * their energies, @p cell_force_of(c, local_force) giving cell c's
      * (as cell_force()); called on deal.II's threads, it must write only
-     * what belongs to cell c. The sums are taken in cell order on one
-     * thread: the result does not depend on the number of threads.
+     * what belongs to cell c. Each process computes its own cells
+     * (owned_range()), and shares the terms with the others. The sums are
+     * taken in cell order on one thread: the result does not depend on the
+     * number of threads or processes.
      */
     template <typename CellForce>
     double
     sum_cell_forces(const CellForce &cell_force_of,
                     Vector<double>  &force) const;
+
+    /** The cells whose per-cell work this process does: every cell
+     * without OwnedCells. */
+    std::pair<unsigned int, unsigned int>
+    owned_range() const;
 
     /** The inverse of the tangent of every material (for the energy). */
     std::vector<SymmetricTensor<4, 2>>
@@ -232,6 +245,7 @@ namespace ndda
     const parameters::Materials     *materials     = nullptr;
     const std::vector<unsigned int> *cell_material = nullptr;
     const Triangulation<2>          *triangulation = nullptr;
+    const OwnedCells                *owned_cells   = nullptr;
 
     /// The stresses of all cells, n_points per cell (values()).
     std::vector<Stress> stress;

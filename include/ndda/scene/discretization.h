@@ -15,6 +15,7 @@
 #include <ndda/kinematics/block_kinematics.h>
 #include <ndda/kinematics/reduced_blocks.h>
 #include <ndda/mesh/crackable_mesh.h>
+#include <ndda/parallel/owned_cells.h>
 #include <ndda/parameters/parameters.h>
 #include <ndda/physics/block_rotation.h>
 #include <ndda/physics/bolts.h>
@@ -251,6 +252,9 @@ namespace ndda
       /// The processes that solve the linear systems together (the
       /// Simulator's; one process unless it was given more).
       MPI_Comm communicator = MPI_COMM_SELF;
+      /// The active cells split among those processes for the per-cell
+      /// work (setup_dofs()).
+      OwnedCells owned_cells;
 
     private:
       SectionTimer &timer;

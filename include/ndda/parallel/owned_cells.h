@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef ndda_parallel_owned_cells_h
+#define ndda_parallel_owned_cells_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <cstddef>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace ndda
+{
+  using namespace dealii;
+
+  /**
+   * The active cells of a scene split among the processes of an MPI
+   * communicator, for the work that is done cell by cell: each process
+   * owns a contiguous range of cells (the cells are numbered along a
+   * Hilbert curve, so that a range is a compact part of the scene), does
+   * the work of those cells only, and share() then gives every process the
+   * results of every cell.
+   *
+   * Every process holds the whole scene (doc/design.md, "MPI"), and sums
+   * over cells are taken on every process alike in cell order from the
+   * shared per-cell results. A cell's result does not depend on the
+   * process that computes it, so a run on any number of processes gives
+   * the same results to the last bit as a run on one.
+   *
+   * With one process (or MPI_COMM_SELF) it owns every cell and share()
+   * does nothing.
+   *
+   * @ingroup parallel
+   */
+  class OwnedCells
+  {
+  public:
+    /** Split among the processes of @p communicator (not duplicated: the
+     * owner of the communicator keeps it alive). */
+    void
+    set_communicator(const MPI_Comm communicator);
+
+    /** Split @p n_cells cells into ranges as equal as they can be. */
+    void
+    reinit(const unsigned int n_cells);
+
+    /** The number of cells split. */
+    unsigned int
+    n_cells() const
+    {
+      return first_cell.back();
+    }
+
+    /** The first cell of this process. */
+    unsigned int
+    begin() const
+    {
+      return first_cell[this_process];
+    }
+
+    /** One past the last cell of this process. */
+    unsigned int
+    end() const
+    {
+      return first_cell[this_process + 1];
+    }
+
+    /** Throw unless the cells are split as @p n_cells cells (or not
+     * split); @p what names the caller in the message. */
+    void
+    check_size(const unsigned int n_cells, const std::string &what) const;
+
+    /** Whether the cells are split among more than one process. */
+    bool
+    is_split() const
+    {
+      return first_cell.size() > 2;
+    }
+
+    /**
+     * Give every process every cell's values of @p values, which holds
+     * @p per_cell values of each cell, cell after cell, of which this
+     * process has set those of its own cells. The values are sent as they
+     * are in memory: T must be trivially copyable and a whole number of
+     * doubles (as a double, a Tensor or a SymmetricTensor of doubles is).
+     * Collective.
+     */
+    template <typename T>
+    void
+    share(std::vector<T> &values, const std::size_t per_cell) const;
+
+    /**
+     * share() for the cells @p cells only (in increasing order, the same
+     * list on every process): every process gets the values of those
+     * cells that other processes own; the values of other cells stay as
+     * they are. Collective.
+     */
+    template <typename T>
+    void
+    share(std::vector<T>                  &values,
+          const std::size_t                per_cell,
+          const std::vector<unsigned int> &cells) const;
+
+  private:
+    /** share() on @p values, @p per_cell doubles per cell. */
+    void
+    share_doubles(double *values, const std::size_t per_cell) const;
+
+    /** share() on @p values, @p per_cell doubles per cell, of @p cells. */
+    void
+    share_doubles(double                          *values,
+                  const std::size_t                per_cell,
+                  const std::vector<unsigned int> &cells) const;
+
+    MPI_Comm     communicator = MPI_COMM_SELF;
+    unsigned int this_process = 0;
+    /// The first cell of each process, and the number of cells at the end.
+    std::vector<unsigned int> first_cell = {0, 0};
+  };
+
+
+
+  template <typename T>
+  void
+  OwnedCells::share(std::vector<T> &values, const std::size_t per_cell) const
+  {
+    static_assert(std::is_trivially_copyable_v<T> &&
+                    sizeof(T) % sizeof(double) == 0,
+                  "OwnedCells::share() sends whole doubles.");
+    if (!is_split())
+      return;
+    AssertThrow(values.size() == std::size_t(n_cells()) * per_cell,
+                ExcDimensionMismatch(values.size(),
+                                     std::size_t(n_cells()) * per_cell));
+    share_doubles(reinterpret_cast<double *>(values.data()),
+                  per_cell * (sizeof(T) / sizeof(double)));
+  }
+
+
+
+  template <typename T>
+  void
+  OwnedCells::share(std::vector<T>                  &values,
+                    const std::size_t                per_cell,
+                    const std::vector<unsigned int> &cells) const
+  {
+    static_assert(std::is_trivially_copyable_v<T> &&
+                    sizeof(T) % sizeof(double) == 0,
+                  "OwnedCells::share() sends whole doubles.");
+    if (!is_split())
+      return;
+    if (cells.size() == n_cells())
+      share(values, per_cell);
+    else
+      {
+        AssertThrow(values.size() == std::size_t(n_cells()) * per_cell,
+                    ExcDimensionMismatch(values.size(),
+                                         std::size_t(n_cells()) * per_cell));
+        share_doubles(reinterpret_cast<double *>(values.data()),
+                      per_cell * (sizeof(T) / sizeof(double)),
+                      cells);
+      }
+  }
+} // namespace ndda
+
+#endif

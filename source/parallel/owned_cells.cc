@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <ndda/parallel/owned_cells.h>
+
+#include <algorithm>
+#include <climits>
+#include <string>
+
+namespace ndda
+{
+  namespace
+  {
+    /** @p end, the end of a process's values in a gathered array, as
+     * the int that MPI counts in. */
+    int
+    mpi_count(const std::size_t end)
+    {
+      AssertThrow(end <= std::size_t(INT_MAX),
+                  ExcMessage("OwnedCells::share(): more than 2^31 values "
+                             "to share in one call (" +
+                             std::to_string(end) + ")."));
+      return end;
+    }
+  } // namespace
+
+
+
+  void
+  OwnedCells::check_size(const unsigned int n_cells,
+                         const std::string &what) const
+  {
+    AssertThrow(!is_split() || this->n_cells() == n_cells,
+                ExcMessage(what +
+                           ": the cells are split among the "
+                           "processes as " +
+                           std::to_string(this->n_cells()) + " cells, " +
+                           std::to_string(n_cells) + " are given."));
+  }
+
+
+
+  void
+  OwnedCells::set_communicator(const MPI_Comm communicator)
+  {
+    const bool with_mpi = Utilities::MPI::job_supports_mpi();
+    this->communicator  = with_mpi ? communicator : MPI_COMM_SELF;
+    this_process =
+      with_mpi ? Utilities::MPI::this_mpi_process(this->communicator) : 0;
+    const unsigned int n_processes =
+      with_mpi ? Utilities::MPI::n_mpi_processes(this->communicator) : 1;
+    first_cell.assign(n_processes + 1, 0);
+  }
+
+
+
+  void
+  OwnedCells::reinit(const unsigned int n_cells)
+  {
+    // Process p owns cells [p n / P, (p + 1) n / P).
+    const std::size_t n_processes = first_cell.size() - 1;
+    for (std::size_t p = 0; p <= n_processes; ++p)
+      first_cell[p] = (std::size_t(n_cells) * p) / n_processes;
+  }
+
+
+
+  void
+  OwnedCells::share_doubles(double *values, const std::size_t per_cell) const
+  {
+    const std::size_t n_processes = first_cell.size() - 1;
+    std::vector<int>  counts(n_processes);
+    std::vector<int>  offsets(n_processes);
+    for (std::size_t p = 0; p < n_processes; ++p)
+      {
+        const std::size_t count =
+          std::size_t(first_cell[p + 1] - first_cell[p]) * per_cell;
+        const std::size_t offset = std::size_t(first_cell[p]) * per_cell;
+        counts[p]                = mpi_count(offset + count) - offset;
+        offsets[p]               = offset;
+      }
+    const int error = MPI_Allgatherv(MPI_IN_PLACE,
+                                     0,
+                                     MPI_DATATYPE_NULL,
+                                     values,
+                                     counts.data(),
+                                     offsets.data(),
+                                     MPI_DOUBLE,
+                                     communicator);
+    AssertThrowMPI(error);
+  }
+
+
+
+  void
+  OwnedCells::share_doubles(double                          *values,
+                            const std::size_t                per_cell,
+                            const std::vector<unsigned int> &cells) const
+  {
+    // Each process's cells of the list, packed in list order, gathered
+    // by all, and unpacked where they belong.
+    const std::size_t n_processes = first_cell.size() - 1;
+    std::vector<std::vector<unsigned int>::const_iterator> start(n_processes +
+                                                                 1);
+    for (std::size_t p = 0; p <= n_processes; ++p)
+      start[p] = std::lower_bound(cells.begin(), cells.end(), first_cell[p]);
+    std::vector<int> counts(n_processes);
+    std::vector<int> offsets(n_processes);
+    std::size_t      total = 0;
+    for (std::size_t p = 0; p < n_processes; ++p)
+      {
+        const std::size_t count = (start[p + 1] - start[p]) * per_cell;
+        counts[p]               = mpi_count(total + count) - total;
+        offsets[p]              = total;
+        total += count;
+      }
+    std::vector<double> own;
+    own.reserve(counts[this_process]);
+    for (auto c = start[this_process]; c != start[this_process + 1]; ++c)
+      own.insert(own.end(),
+                 values + std::size_t(*c) * per_cell,
+                 values + std::size_t(*c + 1) * per_cell);
+    std::vector<double> all(total);
+    const int           error = MPI_Allgatherv(own.data(),
+                                     counts[this_process],
+                                     MPI_DOUBLE,
+                                     all.data(),
+                                     counts.data(),
+                                     offsets.data(),
+                                     MPI_DOUBLE,
+                                     communicator);
+    AssertThrowMPI(error);
+    for (std::size_t p = 0; p < n_processes; ++p)
+      if (p != this_process)
+        {
+          const double *from = all.data() + offsets[p];
+          for (auto c = start[p]; c != start[p + 1]; ++c, from += per_cell)
+            std::copy(from,
+                      from + per_cell,
+                      values + std::size_t(*c) * per_cell);
+        }
+  }
+} // namespace ndda
