@@ -21,9 +21,14 @@
 //     of 1e-12 in fewer than 60 iterations and agrees with CHOLMOD to 1e-9;
 //  6. OwnedCells, the split of the cells for the per-cell work: contiguous
 //     ranges without gap or overlap, as equal as they can be, and share()
-//     gives every process every cell's values (all cells, or a list).
+//     gives every process every cell's values (all cells, or a list);
+//  7. SerialWork, the first process's work while the others wait: on the
+//     threads of every process of its machine (as far as the cores it may
+//     run on allow), back to its own number after, and its error thrown
+//     on every process.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
 
@@ -45,10 +50,12 @@
 
 #include <ndda/parallel/distributed_solver.h>
 #include <ndda/parallel/owned_cells.h>
+#include <ndda/parallel/serial_work.h>
 #include <ndda/physics/linear_solver.h>
 
 #include <iomanip>
 #include <iostream>
+#include <sched.h>
 
 #include "tests.h"
 
@@ -419,5 +426,54 @@ main(int argc, char **argv)
   }
   out << "cells split among the processes without gap or overlap, their "
       << "values shared" << std::endl;
+
+  // 7. Work of the first process alone (SerialWork): on the threads of
+  // every process of its machine (all of them here), back to its own
+  // after; its error thrown on every process.
+  {
+    const SerialWork   serial(comm);
+    const unsigned int own_threads = MultithreadInfo::n_threads();
+    const bool         first = Utilities::MPI::this_mpi_process(comm) == 0;
+    unsigned int       threads_in_work = 0;
+    unsigned int       calls           = 0;
+    serial.run([&]() {
+      ++calls;
+      threads_in_work = MultithreadInfo::n_threads();
+    });
+    check(calls == (first ? 1u : 0u), "the work runs on the first process");
+    // Every process is on this machine; no more than the cores that the
+    // first process may run on (mpirun binds it to one by default).
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    sched_getaffinity(0, sizeof(allowed), &allowed);
+    const unsigned int processes =
+      std::max(1u, std::min(n_processes, CPU_COUNT(&allowed) / own_threads));
+    check(!first || serial.processes_on_first_machine() == processes,
+          "the processes on the first machine, as many as it has cores for");
+    const unsigned int expected =
+      std::getenv("DEAL_II_NUM_THREADS") != nullptr ?
+        threads_in_work : // the environment caps it
+        own_threads * processes;
+    check(!first || threads_in_work == expected,
+          "the first process works on the threads of every process");
+    check(MultithreadInfo::n_threads() == own_threads,
+          "and goes back to its own number of threads");
+    std::string message;
+    try
+      {
+        serial.run(
+          []() { AssertThrow(false, ExcMessage("no factorization here")); });
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream text;
+        exc.print_info(text);
+        message = text.str();
+      }
+    check(message.find("no factorization here") != std::string::npos,
+          "the first process's error is thrown on every process");
+  }
+  out << "work of the first process alone: on every process's threads, "
+      << "its error thrown on all" << std::endl;
   return 0;
 }

@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ndda/parallel/distributed_solver.h>
+#include <ndda/parallel/serial_work.h>
 #include <ndda/physics/cg_amg.h>
 #include <ndda/physics/cg_jacobi.h>
 #include <ndda/physics/cholesky.h>
@@ -18,7 +19,6 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -319,56 +319,6 @@ namespace ndda
     };
 
 
-  } // namespace
-
-
-
-  namespace
-  {
-    /**
-     * Run @p work on the first process of @p communicator; if it throws
-     * there, every process throws the same message.
-     */
-    template <class Work>
-    void
-    on_first_process(const MPI_Comm communicator, const Work &work)
-    {
-      std::string error;
-      bool        failed = false;
-      if (Utilities::MPI::this_mpi_process(communicator) == 0)
-        {
-          try
-            {
-              work();
-            }
-          catch (const ExceptionBase &exc)
-            {
-              failed = true;
-              std::ostringstream message;
-              exc.print_info(message);
-              error = message.str();
-            }
-          catch (const std::exception &exc)
-            {
-              failed = true;
-              error  = exc.what();
-            }
-          catch (...)
-            {
-              failed = true;
-            }
-          // ExcMessage's text, without deal.II's indentation.
-          error.erase(0, error.find_first_not_of(" \n\t"));
-          while (!error.empty() && std::isspace(error.back()))
-            error.pop_back();
-          if (failed && error.empty())
-            error = "unknown error";
-        }
-      error = Utilities::MPI::broadcast(communicator, error, 0);
-      AssertThrow(error.empty(), ExcMessage(error));
-    }
-
-
 
     /**
      * GMRES on @p matrix x = b from x = 0, preconditioned on the right by
@@ -450,6 +400,8 @@ namespace ndda
                           type == parameters::LinearSolverType::umfpack ||
                           type == parameters::LinearSolverType::klu ||
                           type == parameters::LinearSolverType::cg_jacobi);
+    if (first_process_solves)
+      serial_work = std::make_unique<SerialWork>(communicator);
     if (type == parameters::LinearSolverType::mumps)
       distributed =
         std::make_unique<DistributedSolver>(communicator,
@@ -721,7 +673,7 @@ namespace ndda
         factorize_here(matrix);
         return;
       }
-    on_first_process(communicator, [&]() { factorize_here(matrix); });
+    serial_work->run([&]() { factorize_here(matrix); });
     // The reuse decisions of every process follow the first one's
     // factorization.
     sent_solve_ratio =
@@ -755,7 +707,7 @@ namespace ndda
     if (!first_process_solves)
       return reuse_here(matrix, x, b, min_iterations, tolerance);
     unsigned int iterations = 0;
-    on_first_process(communicator, [&]() {
+    serial_work->run([&]() {
       iterations = reuse_here(matrix, x, b, min_iterations, tolerance);
     });
     iterations = Utilities::MPI::broadcast(communicator, iterations, 0);
@@ -772,7 +724,7 @@ namespace ndda
     if (!first_process_solves)
       return solve_here(x, b);
     unsigned int iterations = 0;
-    on_first_process(communicator, [&]() { iterations = solve_here(x, b); });
+    serial_work->run([&]() { iterations = solve_here(x, b); });
     send_solution(x, b.size());
     return Utilities::MPI::broadcast(communicator, iterations, 0);
   }

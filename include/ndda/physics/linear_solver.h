@@ -17,6 +17,7 @@ namespace ndda
   using namespace dealii;
 
   class DistributedSolver;
+  class SerialWork;
 
   /**
    * The one place where the linear algebra back end is chosen (DESIGN.md
@@ -170,11 +171,13 @@ namespace ndda
     /// The processes of the run; whether a serial solver on several of
     /// them works on the first one only, and the cost of its last
     /// factorization there, sent to all.
-    MPI_Comm            communicator         = MPI_COMM_SELF;
-    bool                first_process_solves = false;
-    double              sent_solve_ratio     = 0;
-    std::vector<double> rigid_body_modes;
-    unsigned int        factorization_count = 0;
+    MPI_Comm communicator         = MPI_COMM_SELF;
+    bool     first_process_solves = false;
+    /// The first process's work and the others' wait, when it solves.
+    std::unique_ptr<SerialWork> serial_work;
+    double                      sent_solve_ratio = 0;
+    std::vector<double>         rigid_body_modes;
+    unsigned int                factorization_count = 0;
   };
 } // namespace ndda
 
