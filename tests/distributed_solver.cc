@@ -23,9 +23,10 @@
 //     ranges without gap or overlap, as equal as they can be, and share()
 //     gives every process every cell's values (all cells, or a list);
 //  7. SerialWork, the first process's work while the others wait: on the
-//     threads of every process of its machine (as far as the cores it may
-//     run on allow), back to its own number after, and its error thrown
-//     on every process.
+//     threads and the cores of every process of its machine (mpirun binds
+//     each process to a core of its own by default), back to its own
+//     number of threads and its own cores after, and its error thrown on
+//     every process.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/multithread_info.h>
@@ -56,6 +57,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sched.h>
+#include <tbb/task_arena.h>
 
 #include "tests.h"
 
@@ -427,35 +429,58 @@ main(int argc, char **argv)
   out << "cells split among the processes without gap or overlap, their "
       << "values shared" << std::endl;
 
-  // 7. Work of the first process alone (SerialWork): on the threads of
-  // every process of its machine (all of them here), back to its own
-  // after; its error thrown on every process.
+  // 7. Work of the first process alone (SerialWork): on the threads and
+  // the cores of every process of its machine (all of them here), back to
+  // its own after; its error thrown on every process.
   {
     const SerialWork   serial(comm);
     const unsigned int own_threads = MultithreadInfo::n_threads();
     const bool         first = Utilities::MPI::this_mpi_process(comm) == 0;
-    unsigned int       threads_in_work = 0;
-    unsigned int       calls           = 0;
+    // The cores of this process, and of all (every process is on this
+    // machine).
+    cpu_set_t own, all, in_work, after;
+    CPU_ZERO(&own);
+    CPU_ZERO(&all);
+    CPU_ZERO(&in_work);
+    CPU_ZERO(&after);
+    sched_getaffinity(0, sizeof(own), &own);
+    std::vector<cpu_set_t> cores(n_processes);
+    MPI_Allgather(&own,
+                  sizeof(cpu_set_t),
+                  MPI_BYTE,
+                  cores.data(),
+                  sizeof(cpu_set_t),
+                  MPI_BYTE,
+                  comm);
+    for (const auto &c : cores)
+      CPU_OR(&all, &all, &c);
+    unsigned int threads_in_work = 0;
+    int          arena_threads   = 0;
+    unsigned int calls           = 0;
     serial.run([&]() {
       ++calls;
       threads_in_work = MultithreadInfo::n_threads();
+      arena_threads   = tbb::this_task_arena::max_concurrency();
+      sched_getaffinity(0, sizeof(in_work), &in_work);
     });
+    sched_getaffinity(0, sizeof(after), &after);
     check(calls == (first ? 1u : 0u), "the work runs on the first process");
-    // Every process is on this machine; no more than the cores that the
-    // first process may run on (mpirun binds it to one by default).
-    cpu_set_t allowed;
-    CPU_ZERO(&allowed);
-    sched_getaffinity(0, sizeof(allowed), &allowed);
+    // No more threads than the cores of all processes.
     const unsigned int processes =
-      std::max(1u, std::min(n_processes, CPU_COUNT(&allowed) / own_threads));
+      std::max(1u, std::min(n_processes, CPU_COUNT(&all) / own_threads));
     check(!first || serial.processes_on_first_machine() == processes,
-          "the processes on the first machine, as many as it has cores for");
+          "the processes on the first machine, as many as their cores allow");
     const unsigned int expected =
       std::getenv("DEAL_II_NUM_THREADS") != nullptr ?
         threads_in_work : // the environment caps it
         own_threads * processes;
     check(!first || threads_in_work == expected,
           "the first process works on the threads of every process");
+    check(!first || arena_threads == static_cast<int>(own_threads * processes),
+          "in an arena of as many threads");
+    check(!first || processes == 1 || CPU_EQUAL(&in_work, &all),
+          "on the cores of every process");
+    check(CPU_EQUAL(&after, &own), "and goes back to its own cores");
     check(MultithreadInfo::n_threads() == own_threads,
           "and goes back to its own number of threads");
     std::string message;

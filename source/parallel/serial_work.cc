@@ -7,10 +7,14 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
+#include <dirent.h>
 #include <sched.h>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 namespace ndda
 {
@@ -40,6 +44,66 @@ namespace ndda
                        std::chrono::microseconds(20),
                        std::chrono::microseconds(1000)));
           AssertThrowMPI(MPI_Test(&request, &done, MPI_STATUS_IGNORE));
+        }
+    }
+
+
+
+    /** The threads of this process, each with the cores it may run on. */
+    std::vector<std::pair<pid_t, cpu_set_t>>
+    cores_of_threads()
+    {
+      std::vector<std::pair<pid_t, cpu_set_t>> threads;
+      DIR *const directory = opendir("/proc/self/task");
+      if (directory == nullptr)
+        return threads;
+      while (const dirent *entry = readdir(directory))
+        {
+          if (entry->d_name[0] == '.')
+            continue;
+          const pid_t thread = std::atoi(entry->d_name);
+          cpu_set_t   cores;
+          CPU_ZERO(&cores);
+          if (sched_getaffinity(thread, sizeof(cores), &cores) == 0)
+            threads.emplace_back(thread, cores);
+        }
+      closedir(directory);
+      return threads;
+    }
+
+
+
+    /**
+     * Let every thread of this process run on @p cores (a thread that has
+     * ended meanwhile is skipped), and return the cores each had.
+     */
+    std::vector<std::pair<pid_t, cpu_set_t>>
+    widen_cores(const cpu_set_t &cores)
+    {
+      const auto before = cores_of_threads();
+      for (const auto &thread : before)
+        sched_setaffinity(thread.first, sizeof(cores), &cores);
+      return before;
+    }
+
+
+
+    /**
+     * Give every thread of this process back the cores it had @p before;
+     * threads started since get @p own, the calling thread's.
+     */
+    void
+    restore_cores(const std::vector<std::pair<pid_t, cpu_set_t>> &before,
+                  const cpu_set_t                                &own)
+    {
+      for (const auto &thread : cores_of_threads())
+        {
+          const auto had =
+            std::find_if(before.begin(), before.end(), [&](const auto &t) {
+              return t.first == thread.first;
+            });
+          const cpu_set_t &cores = had != before.end() ? had->second : own;
+          sched_setaffinity(thread.first, sizeof(cores), &cores);
         }
     }
 
@@ -78,6 +142,7 @@ namespace ndda
 
   SerialWork::SerialWork(const MPI_Comm communicator)
   {
+    CPU_ZERO(&machine_cores);
     if (!Utilities::MPI::job_supports_mpi())
       return;
     this->communicator = communicator;
@@ -90,22 +155,34 @@ namespace ndda
     AssertThrowMPI(MPI_Comm_split_type(
       communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine));
     const unsigned int on_machine = Utilities::MPI::n_mpi_processes(machine);
+    // The cores of all of them: an MPI launcher may bind each process to
+    // cores of its own (Open MPI does so by default for two processes;
+    // `mpirun --bind-to none` does not).
+    cpu_set_t own;
+    CPU_ZERO(&own);
+    if (sched_getaffinity(0, sizeof(own), &own) != 0)
+      CPU_SET(sched_getcpu() >= 0 ? sched_getcpu() : 0, &own);
+    std::vector<cpu_set_t> cores(on_machine);
+    AssertThrowMPI(MPI_Allgather(&own,
+                                 sizeof(cpu_set_t),
+                                 MPI_BYTE,
+                                 cores.data(),
+                                 sizeof(cpu_set_t),
+                                 MPI_BYTE,
+                                 machine));
     AssertThrowMPI(MPI_Comm_free(&machine));
-    // No more threads than the cores the first process may run on: an
-    // MPI launcher that binds each process to a core (Open MPI does so
-    // by default for two processes; `mpirun --bind-to none` does not)
-    // leaves it one.
-    cpu_set_t allowed;
-    CPU_ZERO(&allowed);
-    const unsigned int n_allowed =
-      sched_getaffinity(0, sizeof(allowed), &allowed) == 0 ?
-        CPU_COUNT(&allowed) :
-        1;
+    for (const auto &c : cores)
+      CPU_OR(&machine_cores, &machine_cores, &c);
+    // No more threads than those cores.
     const unsigned int own_threads = MultithreadInfo::n_threads();
-    n_on_machine =
-      this_process == 0 ?
-        std::max(1u, std::min(on_machine, n_allowed / own_threads)) :
-        1;
+    n_on_machine                   = this_process == 0 ?
+                                       std::max(1u,
+                              std::min<unsigned int>(on_machine,
+                                                     CPU_COUNT(&machine_cores) /
+                                                       own_threads)) :
+                                       1;
+    if (n_on_machine > 1)
+      arena = std::make_unique<tbb::task_arena>(own_threads * n_on_machine);
   }
 
 
@@ -121,19 +198,37 @@ namespace ndda
     std::string error;
     if (this_process == 0)
       {
-        const unsigned int own_threads = MultithreadInfo::n_threads();
-        if (n_on_machine > 1)
-          MultithreadInfo::set_thread_limit(own_threads * n_on_machine);
-        try
+        const auto run_work = [&]() {
+          try
+            {
+              work();
+            }
+          catch (...)
+            {
+              error = message_of_current_exception();
+            }
+        };
+        if (n_on_machine == 1)
+          run_work();
+        else
           {
-            work();
+            // Every thread on the cores of the machine's processes, and an
+            // arena of their threads: TBB's own arena keeps the number of
+            // cores the process had when it began.
+            cpu_set_t own;
+            CPU_ZERO(&own);
+            const bool widen = sched_getaffinity(0, sizeof(own), &own) == 0 &&
+                               !CPU_EQUAL(&own, &machine_cores);
+            std::vector<std::pair<pid_t, cpu_set_t>> before;
+            if (widen)
+              before = widen_cores(machine_cores);
+            const unsigned int own_threads = MultithreadInfo::n_threads();
+            MultithreadInfo::set_thread_limit(own_threads * n_on_machine);
+            arena->execute(run_work);
+            MultithreadInfo::set_thread_limit(own_threads);
+            if (widen)
+              restore_cores(before, own);
           }
-        catch (...)
-          {
-            error = message_of_current_exception();
-          }
-        if (n_on_machine > 1)
-          MultithreadInfo::set_thread_limit(own_threads);
       }
     wait_without_spinning(communicator);
     error = Utilities::MPI::broadcast(communicator, error, 0);

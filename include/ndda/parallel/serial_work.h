@@ -5,6 +5,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <functional>
+#include <memory>
+#include <sched.h>
+#include <tbb/task_arena.h>
 
 namespace ndda
 {
@@ -20,11 +23,15 @@ namespace ndda
    *   so far (20 us to 1 ms), so that they leave their cores to the first
    *   process and wake at most about a tenth of the wait late. (Open MPI's
    *   blocking calls poll without pause and keep a core busy.)
-   * - The first process does the work on the threads of every process on
-   *   its machine (its own number of threads times the number of
-   *   processes there, as far as the cores it may run on allow: an MPI
-   *   launcher that binds each process to one core leaves it its own),
-   *   and then goes back to its own number. ndda's
+   * - The first process does the work on the threads and the cores of
+   *   every process on its machine: its own number of threads times the
+   *   number of processes there (at most as many as those processes' cores
+   *   together), in a TBB arena of that many threads. An MPI launcher that
+   *   binds each process to its own cores (Open MPI does so by default for
+   *   up to two processes) would leave it its own cores only, so for the
+   *   work every thread of the first process may run on the cores of all
+   *   the processes on its machine; afterwards each thread gets back the
+   *   cores it had, and the process its own number of threads. ndda's
    *   results do not depend on the number of threads, so the work gives
    *   the same bits.
    * - If the work throws on the first process, every process throws the
@@ -45,7 +52,7 @@ namespace ndda
     run(const std::function<void()> &work) const;
 
     /** The number of processes on the first process's machine whose
-     * threads it takes, at most as many as its cores allow (1 with one
+     * threads it takes, at most as many as their cores allow (1 with one
      * process, and on the other processes). */
     unsigned int
     processes_on_first_machine() const
@@ -58,6 +65,11 @@ namespace ndda
     unsigned int n_processes  = 1;
     unsigned int this_process = 0;
     unsigned int n_on_machine = 1;
+    /// The first process: the cores of the processes on its machine.
+    cpu_set_t machine_cores;
+    /// The first process, with processes on its machine to take from: an
+    /// arena of their threads.
+    std::unique_ptr<tbb::task_arena> arena;
   };
 } // namespace ndda
 
