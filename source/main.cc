@@ -8,11 +8,43 @@
 #include <ndda/parameters/parameters.h>
 #include <ndda/simulator.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <string>
+#include <unistd.h>
 
 namespace
 {
+  /**
+   * OpenBLAS chooses its kernels when it is loaded, before main(): those
+   * of OPENBLAS_CORETYPE if it is set, else those of the CPU. ndda.sh and
+   * the test suite set OPENBLAS_CORETYPE=Haswell on every CPU with AVX2
+   * and FMA, so that the results are the same to the bit on AMD and Intel
+   * machines (CMakeLists.txt). A run of build/ndda started without it on
+   * such a CPU starts itself again with it set, so that its results do
+   * not depend on how it was started. Not under valgrind, which would not
+   * follow the new program.
+   */
+  void
+  start_again_with_openblas_kernels(char **argv)
+  {
+    if (std::getenv("OPENBLAS_CORETYPE") != nullptr)
+      return;
+    __builtin_cpu_init();
+    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma"))
+      return;
+    const char *preload = std::getenv("LD_PRELOAD");
+    if (preload != nullptr && std::strstr(preload, "valgrind") != nullptr)
+      return;
+    setenv("OPENBLAS_CORETYPE", "Haswell", 1);
+    execv("/proc/self/exe", argv);
+    // The run goes on with the kernels OpenBLAS chose.
+    unsetenv("OPENBLAS_CORETYPE");
+  }
+
+
+
   void
   print_help(std::ostream &out)
   {
@@ -70,6 +102,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  start_again_with_openblas_kernels(argv);
   // Every core (or DEAL_II_NUM_THREADS) unless `--threads N`, divided
   // among the processes of this machine; the results do not depend on the
   // number of threads (ndda/base/threads.h).
