@@ -412,6 +412,7 @@ namespace ndda
     assembled_coefficients[1] = damping_coefficient;
     matrices_changed          = false;
     base_factorized           = false;
+    ++base_version;
   }
 
 
@@ -639,23 +640,33 @@ namespace ndda
     refactorize_next        = false;
     if (iterations == 0)
       {
-        base_factorized = !springs;
-        reuse_spent     = 0;
-        reuse_fewest    = numbers::invalid_unsigned_int;
-        iterations      = compact_solve(b, d, true, 0);
+        base_factorized     = !springs;
+        reuse_spent         = 0;
+        reuse_fewest        = numbers::invalid_unsigned_int;
+        reused_base_version = numbers::invalid_unsigned_int;
+        iterations          = compact_solve(b, d, true, 0);
       }
     else
       {
         // The factorization has aged when one solve converges slowly, or
-        // when the iterations spent with it beyond the fewest a solve with
-        // it took (what a new factorization could bring them back to) have
-        // come to what a new one costs: reuse then costs at most about
-        // twice what the best choice of factorizations would have (the
-        // ski-rental argument). A system that changes by as much in every
-        // step (a turning block whose matrices are rebuilt) keeps its
-        // factorization.
-        reuse_fewest = std::min(reuse_fewest, iterations);
-        reuse_spent += iterations - reuse_fewest;
+        // when the iterations spent with it beyond what a new factorization
+        // would have brought them back to have come to what a new one
+        // costs: reuse then costs at most about twice what the best choice
+        // of factorizations would have (the ski-rental argument).
+        // - A system without springs whose matrix has not changed since
+        //   the last such solve: one back-substitution. A factorization of
+        //   it made then would have served this solve, and would serve
+        //   every later one until the matrix or the springs change (the
+        //   contacts of a scene that have all opened).
+        // - Else the fewest iterations a solve with the present
+        //   factorization took: a system that changes by as much in every
+        //   step (a turning block whose matrices are rebuilt, the springs
+        //   of the contacts) keeps its factorization.
+        reuse_fewest         = std::min(reuse_fewest, iterations);
+        const bool same_base = !springs && reused_base_version == base_version;
+        reuse_spent += iterations - (same_base ? 1u : reuse_fewest);
+        if (!springs)
+          reused_base_version = base_version;
         if (2 * iterations > linear_solver->reuse_limit(reuse_iterations) ||
             reuse_spent > linear_solver->solves_per_factorization())
           refactorize_next = true;
@@ -753,8 +764,9 @@ namespace ndda
   LinearSystem::drop_factorization()
   {
     invalidate();
-    reuse_spent  = 0;
-    reuse_fewest = numbers::invalid_unsigned_int;
+    reuse_spent         = 0;
+    reuse_fewest        = numbers::invalid_unsigned_int;
+    reused_base_version = numbers::invalid_unsigned_int;
     if (linear_solver)
       linear_solver->forget_factorization();
   }

@@ -480,6 +480,12 @@ namespace ndda
     /// The fewest GMRES iterations of a solve with the present
     /// factorization.
     unsigned int reuse_fewest = numbers::invalid_unsigned_int;
+    /// Counts the system matrices without springs that prepare_step() has
+    /// built.
+    unsigned int base_version = 0;
+    /// base_version at the last solve without springs with an earlier
+    /// factorization (invalid if none since the factorization).
+    unsigned int reused_base_version = numbers::invalid_unsigned_int;
     /// Scratch of solve() and compact_solve(), kept from step to step so
     /// that a step allocates nothing: the prescribed increments in the
     /// frames, A g, and the compact right-hand side and solution.
