@@ -8,6 +8,7 @@
 #include <ndda/physics/linear_system.h>
 
 #include <algorithm>
+#include <iterator>
 #include <optional>
 
 namespace ndda
@@ -36,6 +37,108 @@ namespace ndda
     this->timer = timer;
     linear_solver =
       std::make_unique<LinearSolver>(type, tolerance, communicator);
+  }
+
+
+
+  void
+  LinearSystem::reinit(DynamicSparsityPattern &element_couplings,
+                       const Constraints      &constraints,
+                       const bool              with_contacts,
+                       const bool              compact)
+  {
+    this->compact = compact;
+    if (with_contacts)
+      element_sparsity.copy_from(element_couplings);
+    reinit_matrices(element_couplings, constraints);
+    pattern_couplings.clear();
+  }
+
+
+
+  void
+  LinearSystem::reinit_matrices(DynamicSparsityPattern &dsp,
+                                const Constraints      &constraints)
+  {
+    constraints.affine_constraints().condense(dsp);
+    sparsity_pattern.copy_from(dsp);
+    assembled = false;
+    stiffness_matrix.reinit(sparsity_pattern);
+    mass_matrix.reinit(sparsity_pattern);
+    // The damping matrix only once a cell has viscosity (add_cell_rows()):
+    // most scenes have none, and it would be one more matrix with the
+    // whole pattern.
+    damping_matrix.clear();
+    damped = false;
+    if (keep_system_matrix)
+      system_matrix.reinit(sparsity_pattern);
+    else
+      system_matrix.clear();
+    condensed_base.reinit(sparsity_pattern);
+    // The condensed matrix with the springs comes with the first solve
+    // that has springs (solve()); a compact system solves with
+    // compact_matrix instead (solver_matrix()).
+    condensed_matrix.clear();
+    if (!compact)
+      return;
+    // The pattern of the unconstrained dofs among themselves.
+    const auto &affine = constraints.affine_constraints();
+    free_dofs.clear();
+    compact_index.assign(dsp.n_rows(), numbers::invalid_dof_index);
+    for (types::global_dof_index i = 0; i < dsp.n_rows(); ++i)
+      if (!affine.is_constrained(i))
+        {
+          compact_index[i] = free_dofs.size();
+          free_dofs.push_back(i);
+        }
+    DynamicSparsityPattern               compact_dsp(free_dofs.size());
+    std::vector<types::global_dof_index> row;
+    for (unsigned int r = 0; r < free_dofs.size(); ++r)
+      {
+        row.clear();
+        for (auto entry = sparsity_pattern.begin(free_dofs[r]);
+             entry != sparsity_pattern.end(free_dofs[r]);
+             ++entry)
+          if (compact_index[entry->column()] != numbers::invalid_dof_index)
+            row.push_back(compact_index[entry->column()]);
+        std::sort(row.begin(), row.end());
+        compact_dsp.add_entries(r, row.begin(), row.end(), true);
+      }
+    compact_pattern.copy_from(compact_dsp);
+    compact_base.reinit(compact_pattern);
+    compact_matrix.reinit(compact_pattern);
+    compact_plans.clear();
+    setup_expansion(affine);
+  }
+
+
+
+  void
+  LinearSystem::setup_expansion(const AffineConstraints<double> &affine)
+  {
+    const auto n = compact_index.size();
+    expansion_start.assign(n + 1, 0);
+    expansion_column.clear();
+    expansion_weight.clear();
+    for (types::global_dof_index i = 0; i < n; ++i)
+      {
+        if (compact_index[i] != numbers::invalid_dof_index)
+          {
+            expansion_column.push_back(compact_index[i]);
+            expansion_weight.push_back(1.);
+          }
+        else if (const auto *line = affine.get_constraint_entries(i))
+          for (const auto &[master, weight] : *line)
+            {
+              // The lines are closed: their masters are free.
+              Assert(compact_index[master] != numbers::invalid_dof_index,
+                     ExcInternalError());
+              expansion_column.push_back(compact_index[master]);
+              expansion_weight.push_back(weight);
+            }
+        expansion_start[i + 1] = expansion_column.size();
+      }
+    scratch.slot.assign(free_dofs.size(), numbers::invalid_unsigned_int);
   }
 
 
@@ -202,6 +305,53 @@ namespace ndda
     for (unsigned int r = 0; r < free_dofs.size(); ++r)
       d[free_dofs[r]] = compact_d[r];
     return iterations;
+  }
+
+
+
+  bool
+  LinearSystem::update_contact_couplings(
+    const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
+    const DofMap                                             &dof_map,
+    const Constraints                                        &constraints)
+  {
+    if (std::includes(pattern_couplings.begin(),
+                      pattern_couplings.end(),
+                      couplings.begin(),
+                      couplings.end()) &&
+        pattern_couplings.size() <= 2 * couplings.size() + 16)
+      return false;
+    std::vector<std::pair<unsigned int, unsigned int>> merged;
+    std::set_union(pattern_couplings.begin(),
+                   pattern_couplings.end(),
+                   couplings.begin(),
+                   couplings.end(),
+                   std::back_inserter(merged));
+    if (merged.size() > 2 * couplings.size() + 16)
+      merged = couplings;
+    const auto                           section = scope(timer, "sparsity");
+    DynamicSparsityPattern               dsp(element_sparsity.n_rows());
+    std::vector<types::global_dof_index> row;
+    for (types::global_dof_index i = 0; i < element_sparsity.n_rows(); ++i)
+      {
+        row.clear();
+        for (auto entry = element_sparsity.begin(i);
+             entry != element_sparsity.end(i);
+             ++entry)
+          row.push_back(entry->column());
+        dsp.add_entries(i, row.begin(), row.end());
+      }
+    for (const auto &[vertex, cell] : merged)
+      for (const auto i : dof_map.vertex_dofs[vertex])
+        for (unsigned int k = 0; k < dof_map.dofs_per_cell; ++k)
+          {
+            const auto j = dof_map.dofs_of_cell(cell)[k];
+            dsp.add(i, j);
+            dsp.add(j, i);
+          }
+    reinit_matrices(dsp, constraints);
+    pattern_couplings.swap(merged);
+    return true;
   }
 
 

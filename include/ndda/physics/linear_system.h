@@ -298,10 +298,11 @@ namespace ndda
     void
     prune_mass_matrix();
 
-    /** Reinit every matrix on the sparsity pattern (their entries are
-     * zero then), and the compact pattern from it. */
+    /** Condense @p dsp, make it the sparsity pattern, and reinit every
+     * matrix on it (their entries are zero then). */
     void
-    reinit_matrices(const Constraints &constraints);
+    reinit_matrices(DynamicSparsityPattern &dsp,
+                    const Constraints      &constraints);
 
     /** Set @p matrix (on the sparsity pattern) to K + c_M M + c_C C, and
      * the penalty springs of inexact @p constraints of stiffness
@@ -315,8 +316,7 @@ namespace ndda
 
     SectionTimer *timer = nullptr;
 
-    /// Couplings of elements and bolts, condensed, without the contacts'
-    /// (empty in a scene without contacts).
+    /// Couplings of elements and bolts, before contacts and condensation.
     SparsityPattern element_sparsity;
     /// The (vertex, cell) contact couplings the sparsity pattern holds.
     std::vector<std::pair<unsigned int, unsigned int>> pattern_couplings;
@@ -393,7 +393,7 @@ namespace ndda
     /// the rows that g moves, with their entries of b before the lifting.
     double                                                  constraint_work = 0;
     std::vector<std::pair<types::global_dof_index, double>> g_rows;
-    /// The plans by the callers' numbers; emptied with the compact pattern.
+    /// The plans by the callers' numbers; cleared with the compact pattern.
     std::vector<CompactPlan> compact_plans;
     /// Buffers of add_to_compact().
     struct
