@@ -215,11 +215,19 @@ namespace
             reinterpret_cast<std::uintptr_t>(block) % (2u << 20) == 0,
           "a huge block starts on a 2 MB boundary");
     write_pattern(block, huge, 1);
-    // Grow (a new mapping), then shrink in place, then move
-    // below the threshold to malloc().
+    // Grow (the pages moved to a new mapping), twice, then shrink in
+    // place, then move below the threshold to malloc().
     block = SuiteSparse_realloc(3 * huge, huge, 1, block, &ok);
-    check(ok && has_pattern(block, huge, 1), "growing keeps the contents");
+    check(ok && has_pattern(block, huge, 1) &&
+            reinterpret_cast<std::uintptr_t>(block) % (2u << 20) == 0,
+          "growing keeps the contents and the 2 MB boundary");
     write_pattern(block, 3 * huge, 2);
+    block = SuiteSparse_realloc(5 * huge + 7, 3 * huge, 1, block, &ok);
+    check(ok && has_pattern(block, 3 * huge, 2),
+          "growing again keeps the contents");
+    write_pattern(block, 5 * huge + 7, 2);
+    block = SuiteSparse_realloc(3 * huge, 5 * huge + 7, 1, block, &ok);
+    check(ok && has_pattern(block, 3 * huge, 2), "shrinking keeps them");
     block = SuiteSparse_realloc(huge + 5, 3 * huge, 1, block, &ok);
     check(ok && has_pattern(block, huge + 5, 2), "shrinking keeps them");
     block = SuiteSparse_realloc(small, huge + 5, 1, block, &ok);

@@ -165,6 +165,29 @@ namespace ndda
           huge_blocks().set(old_block, size);
           return old_block;
         }
+      if (old_size > 0 &&
+          round_up(size, huge_page) > round_up(old_size, huge_page))
+        {
+          // Grow a mapping: move its pages to the start of a new one. The
+          // kernel moves their page tables; nothing is copied, and only
+          // the new tail's pages are cleared when first touched (a copy
+          // would clear every page of the new block and then write it).
+          void *const block = map_huge_pages(size);
+          if (block != nullptr)
+            {
+              const std::size_t old_length = round_up(old_size, huge_page);
+              if (mremap(old_block,
+                         old_length,
+                         old_length,
+                         MREMAP_MAYMOVE | MREMAP_FIXED,
+                         block) != MAP_FAILED)
+                {
+                  huge_blocks().set(block, size);
+                  return block;
+                }
+              unmap_huge_pages(block, size);
+            }
+        }
       void *const block = allocate(size);
       if (block == nullptr)
         {
