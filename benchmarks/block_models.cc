@@ -42,10 +42,18 @@
 // NDDA_TIMER_TABLE=1 each run's timer table (set-up and every step) goes
 // to the error stream.
 //
+// The eighth argument chooses where a sliding contact's friction takes its
+// normal force from: `same` (the default) the same solve, which makes the
+// matrix non-symmetric; `lagged` the solve before (Contact/penalty
+// Coulomb/Lagged friction, as Shi's DDA), which keeps it symmetric;
+// `lagged:x` the same with Lagged friction tolerance = x.
+//
 // Usage: block_models [steps] [largest wall: 1, 2, 3 or 4] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
 //                     [scene | brick | motion] [all | only]
-//        (default 50, 2, KLU, meshed,affine,rigid, ramped, motion, all)
+//                     [same | lagged | lagged:tolerance]
+//        (default 50, 2, KLU, meshed,affine,rigid, ramped, motion, all,
+//        same)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -88,7 +96,8 @@ namespace
        const std::string &solver,
        const double       ramp,
        const double       displacement_ratio,
-       const std::string &detection)
+       const std::string &detection,
+       const std::string &lag_tolerance)
   {
     const double       w = length, h = 0.5 * courses;
     std::ostringstream joints;
@@ -128,6 +137,12 @@ subsection Contact
   set Penalty factor = 10
   set Detection distance = )"
          << detection << R"(
+  subsection penalty Coulomb
+    set Lagged friction = )"
+         << (lag_tolerance.empty() ? "false" : "true") << R"(
+    set Lagged friction tolerance = )"
+         << (lag_tolerance.empty() ? "1e-3" : lag_tolerance) << R"(
+  end
 end
 subsection Materials
   set Names = rock
@@ -187,7 +202,8 @@ end
       const std::string &solver,
       const unsigned int steps,
       const bool         ramped,
-      const std::string &detection)
+      const std::string &detection,
+      const std::string &lag_tolerance)
   {
     const double ramp = ramped ? ramp_time(courses) : 0.;
     // Shi's detection distance is 2 x the ratio x half the scene's height:
@@ -202,7 +218,8 @@ end
                          solver,
                          ramp,
                          ratio,
-                         detection == "motion" ? "motion" : "scene"),
+                         detection == "motion" ? "motion" : "scene",
+                         lag_tolerance),
                     "wall.prm",
                     prm);
     ndda::Simulator<2> simulator(parameters);
@@ -289,6 +306,19 @@ main(int argc, char **argv)
   const std::string  start     = argc > 5 ? argv[5] : "ramped";
   const std::string  detection = argc > 6 ? argv[6] : "motion";
   const bool         only      = argc > 7 && std::string(argv[7]) == "only";
+  const std::string  friction  = argc > 8 ? argv[8] : "same";
+  std::string        lag_tolerance;
+  if (friction == "lagged")
+    lag_tolerance = "1e-3";
+  else if (friction.rfind("lagged:", 0) == 0)
+    lag_tolerance = friction.substr(7);
+  else if (friction != "same")
+    {
+      std::cerr << "block_models: the eighth argument must be 'same', "
+                   "'lagged' or 'lagged:tolerance', not '"
+                << friction << "'" << std::endl;
+      return 1;
+    }
   if (detection != "scene" && detection != "brick" && detection != "motion")
     {
       std::cerr << "block_models: the sixth argument must be 'scene', "
@@ -327,5 +357,12 @@ main(int argc, char **argv)
        ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
       if (("," + models + ",").find("," + model + ",") != std::string::npos)
-        run(sizes[s][0], sizes[s][1], model, solver, steps, ramped, detection);
+        run(sizes[s][0],
+            sizes[s][1],
+            model,
+            solver,
+            steps,
+            ramped,
+            detection,
+            lag_tolerance);
 }

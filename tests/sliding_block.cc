@@ -14,7 +14,10 @@
 //    for time steps 1e-4, 5e-4 and 2e-3 s;
 //  - frictionless: s(t) = g sin a t^2 / 2, checked to 0.1 %;
 //  - friction angle 35 degrees: the block sticks; its creep in 1 s must stay
-//    below 0.1 mm for penalties 10 E, 100 E and 1000 E.
+//    below 0.1 mm for penalties 10 E, 100 E and 1000 E;
+//  - the slide (dt 5e-4) and the stick again, meshed and rigid, with
+//    lagged friction (penalty Coulomb's Lagged friction: Shi's DDA's
+//    friction from the normal force of the solve before): the same targets.
 //
 // In every run no contact may penetrate deeper than the scene's tolerance
 // (Contact/Maximum penetration ratio of half the scene height). The
@@ -52,6 +55,9 @@ end
 subsection Contact
   set Penalty factor = {penalty}
   set Maximum penetration ratio = 1e-3
+  subsection penalty Coulomb
+    set Lagged friction = {lagged}
+  end
 end
 subsection Materials
   set Names = rock
@@ -106,7 +112,8 @@ end
       const double       dt,
       const double       phi,
       const double       penalty,
-      const std::string &model = "meshed")
+      const std::string &model  = "meshed",
+      const bool         lagged = false)
   {
     const double      length = 5.; // slope length
     const double      base_x = length * std::cos(slope);
@@ -116,6 +123,7 @@ end
     const auto        parameters =
       read_parameters(substitute(scene,
                                  {{"model", model},
+                                  {"lagged", lagged ? "true" : "false"},
                                   {"integrator", integrator},
                                   {"dt", std::to_string(dt)},
                                   {"penalty", std::to_string(penalty)},
@@ -261,6 +269,29 @@ main(int argc, char **argv)
       check(std::abs(free_error) < 1e-3, model + ": frictionless within 0.1 %");
       check(std::abs(stick.displacement) < 1e-4,
             model + ": creep below 0.1 mm");
+    }
+
+  // Lagged friction (Shi's DDA: the normal force of the solve before, the
+  // matrix symmetric): the same slide and stick targets, meshed and rigid.
+  for (const std::string model : {"meshed", "rigid"})
+    {
+      const Result slide = run("DDA", 5e-4, 20, 100, model, true);
+      const Result stick = run("DDA", 1e-3, 35, 100, model, true);
+      const double error = slide.displacement / expected - 1;
+      std::cout << model << ", lagged friction: slide " << slide.displacement
+                << " m, error " << 100 * error << " %; creep at 35 deg "
+                << stick.displacement << " m" << std::endl;
+      const std::string key = "sliding_block.lagged_" + model + ".";
+      record(key + "error", 100 * error, 2);
+      record(key + "creep", stick.displacement * 1e6, 2);
+      record(key + "met",
+             met(std::abs(error) < 5e-3 &&
+                 std::abs(stick.displacement) < 1e-4));
+      report(model + ", lagged friction", slide, key + "friction.");
+      report(model + ", lagged friction, stick", stick, key + "stick.");
+      check(std::abs(error) < 5e-3, model + ", lagged: sliding within 0.5 %");
+      check(std::abs(stick.displacement) < 1e-4,
+            model + ", lagged: creep below 0.1 mm");
     }
   std::cout << "OK" << std::endl;
 }

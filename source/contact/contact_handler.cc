@@ -129,6 +129,7 @@ namespace ndda
             c.bond_length = bond_length(vertices,
                                         c.options[c.chosen].vertex,
                                         c.options[c.chosen].edge);
+          c.solved_gap   = std::numeric_limits<double>::quiet_NaN();
           c.start        = c;
           c.start_chosen = c.chosen;
           c.start_bonded = c.bonded;
@@ -366,6 +367,30 @@ namespace ndda
 
 
     bool
+    ContactHandler::settle_lagging_forces(const dealii::Vector<double> &d)
+    {
+      const ContactLaw &law  = *settings.law;
+      bool              lags = false;
+      for (const ContactPair &c : contacts)
+        if (c.chosen != invalid && !c.shadowed &&
+            law.force_lags(
+              c.options[c.chosen], c, Trial(c.options[c.chosen], d), settings))
+          {
+            lags = true;
+            break;
+          }
+      if (!lags)
+        return false;
+      for (ContactPair &c : contacts)
+        if (c.chosen != invalid && !c.shadowed &&
+            (c.state == State::locked || c.state == State::sliding))
+          c.solved_gap = c.options[c.chosen].normal_gap(d);
+      return true;
+    }
+
+
+
+    bool
     ContactHandler::update_state(ContactPair                  &c,
                                  const dealii::Vector<double> &d)
     {
@@ -374,6 +399,11 @@ namespace ndda
       const Trial       trial(o, d);
       int               sign;
       State             state = State::locked;
+      // The gap of a solve in which the contact was open is no normal
+      // force: a contact that closes takes the step start's gap next.
+      c.solved_gap = c.state == State::locked || c.state == State::sliding ?
+                       trial.gap :
+                       std::numeric_limits<double>::quiet_NaN();
       if (c.bonded && law.bond_holds(o, c, trial, settings))
         sign = 0;
       else

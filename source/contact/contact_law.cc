@@ -73,6 +73,17 @@ namespace ndda
 
 
 
+    bool
+    ContactLaw::force_lags(const Option &,
+                           const ContactState &,
+                           const Trial &,
+                           const ContactSettings &) const
+    {
+      return false;
+    }
+
+
+
     void
     register_contact_law(const std::string &name,
                          const std::string &description,

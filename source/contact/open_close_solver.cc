@@ -26,9 +26,16 @@ namespace ndda
         };
       const unsigned int one_way_limit =
         contacts != nullptr ? settings.max_one_way_iterations : 1;
-      for (unsigned int iteration = 0;; ++iteration)
+      // Solves repeated in the same states because a force lagged behind
+      // its solve (lagged friction), before the contacts are classified:
+      // they are not state changes and do not count towards the limits
+      // on those. At most max_iterations of them in a step attempt; after
+      // that the forces lag one solve behind, as in Shi's DDA.
+      unsigned int lag_solves = 0;
+      for (unsigned int solves = 0;; ++solves)
         {
-          b = rhs;
+          const unsigned int iteration = solves - lag_solves;
+          b                            = rhs;
           // Newmark averages the forces at the step's start and end. A
           // contact that opens in this step would keep half of its start
           // force for the whole step and hand the body the energy
@@ -54,6 +61,11 @@ namespace ndda
           if (contacts == nullptr)
             return true;
           contacts->count_iteration();
+          if (lag_solves < max_iterations && contacts->settle_lagging_forces(d))
+            {
+              ++lag_solves;
+              continue;
+            }
           if (!contacts->update_states(d))
             return true;
           // Past the limit, the iteration goes on only while its changes

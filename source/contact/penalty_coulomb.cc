@@ -13,8 +13,71 @@ namespace ndda
   namespace contact
   {
     void
-    PenaltyCoulomb::declare_parameters(ParameterHandler &)
-    {}
+    PenaltyCoulomb::declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Lagged friction",
+        "false",
+        dealii::Patterns::Bool(),
+        "false: a sliding contact's friction force takes the normal force "
+        "of the same solve, which puts a non-symmetric term into the "
+        "matrix (friction makes `direct` take an LU factorization, and "
+        "CG-Jacobi BiCGStab). true: it takes the normal force of the "
+        "open-close iteration's solve before (in the first solve of a step, "
+        "of the step's start), as Shi's DDA does, and goes to the "
+        "right-hand side alone, so that the matrix stays symmetric "
+        "(Cholesky, CG); while a sliding contact's normal force moved by "
+        "more than the Lagged friction tolerance, the iteration solves "
+        "again in the same states before it classifies the contacts (at "
+        "most Open-close iterations such solves in a step). Slower on the "
+        "ringing wall of doc/performance.md ('Lagged friction'): more "
+        "solves a step.");
+      prm.declare_entry(
+        "Lagged friction tolerance",
+        "1e-3",
+        dealii::Patterns::Double(0.),
+        "With Lagged friction: the largest change of a sliding contact's "
+        "normal force between two solves, relative to the force, at which "
+        "the normal forces count as settled and the contacts are "
+        "classified.");
+    }
+
+
+
+    void
+    PenaltyCoulomb::parse_parameters(ParameterHandler &prm)
+    {
+      lagged_friction = prm.get_bool("Lagged friction");
+      lag_tolerance   = prm.get_double("Lagged friction tolerance");
+    }
+
+
+
+    double
+    PenaltyCoulomb::friction_gap(const Option       &o,
+                                 const ContactState &contact) const
+    {
+      return std::min(std::isnan(contact.solved_gap) ? o.gap :
+                                                       contact.solved_gap,
+                      0.);
+    }
+
+
+
+    bool
+    PenaltyCoulomb::force_lags(const Option          &o,
+                               const ContactState    &contact,
+                               const Trial           &trial,
+                               const ContactSettings &settings) const
+    {
+      if (!lagged_friction || contact.state != State::sliding ||
+          contact.sign == 0 || contact.friction <= 0.)
+        return false;
+      const double used = friction_gap(o, contact);
+      const double now  = std::min(trial.gap, 0.);
+      return std::abs(now - used) >
+             lag_tolerance * std::max(-now, -used) + settings.state_tolerance;
+    }
 
 
 
@@ -48,6 +111,16 @@ namespace ndda
                 for (unsigned int j = 0; j < n; ++j)
                   (*stiffness)(i, j) += ks * o.wt[i] * o.wt[j];
             }
+        }
+      else if (contact.sign != 0 && contact.friction > 0. && lagged_friction)
+        {
+          // Coulomb friction -sign mu N along the tangent, with the normal
+          // force N = -kn g of the solve before (force_lags()): a force
+          // alone, the matrix stays symmetric.
+          const double f =
+            contact.sign * contact.friction * kn * friction_gap(o, contact);
+          for (unsigned int i = 0; i < n; ++i)
+            force[o.dofs[i]] += f * o.wt[i];
         }
       else if (contact.sign != 0 && contact.friction > 0.)
         {
@@ -219,7 +292,9 @@ namespace ndda
       "run starts stay locked until the normal spring pulls harder than "
       "the tensile strength or the shear spring exceeds cohesion plus "
       "friction (Mohr-Coulomb, per metre of joint), and then go on as "
-      "plain contacts (doc/contact.md, 'Bonded joints'). No entries of "
-      "its own.")
+      "plain contacts (doc/contact.md, 'Bonded joints'). Its own entries "
+      "choose where friction takes its normal force from: the same solve "
+      "(a non-symmetric matrix) or the solve before (Lagged friction, a "
+      "symmetric one).")
   } // namespace contact
 } // namespace ndda

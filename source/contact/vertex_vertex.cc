@@ -156,7 +156,9 @@ namespace ndda
       c.state         = State::open;
       int sign;
       c.state = settings.law->classify(o, c, Trial(o, d), settings, sign);
-      c.sign  = sign;
+      // The gap of this solve is no normal force: the pair was not closed.
+      c.solved_gap = std::numeric_limits<double>::quiet_NaN();
+      c.sign       = sign;
       if (c.state == State::open)
         c.chosen = invalid;
       if (settings.start_weight > 0.)

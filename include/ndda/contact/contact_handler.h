@@ -221,6 +221,18 @@ namespace ndda
       update_states(const dealii::Vector<double> &d);
 
       /**
+       * If a force of the contact law lagged behind the solve @p d by more
+       * than the law accepts (ContactLaw::force_lags(): lagged friction
+       * whose normal force has not settled), record the normal gaps of
+       * @p d for the closed contacts (their ContactState::solved_gap) and
+       * return true: the open-close iteration then solves again in the
+       * same states, before it classifies the contacts. Else change
+       * nothing and return false.
+       */
+      bool
+      settle_lagging_forces(const dealii::Vector<double> &d);
+
+      /**
        * Whether the changes of the last update_states() were all one-way:
        * every contact that changed went to a state (and sliding direction)
        * it has not had before in this step (a vertex-vertex pair's state
@@ -235,6 +247,7 @@ namespace ndda
       {
         return one_way;
       }
+
 
       /** Largest penetration (m) at the end of the step with increment
        * @p d, over the closed contacts. */

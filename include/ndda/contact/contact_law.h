@@ -13,6 +13,7 @@
 #include <ndda/contact/contact_parameters.h>
 
 #include <boost/container/small_vector.hpp>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -164,6 +165,12 @@ namespace ndda
       /// Length of joint a bonded contact stands for (m), see
       /// doc/contact.md, "Bonded joints"; 0 for a contact without bond.
       double bond_length = 0;
+      /// The normal gap (m) of the contact on its chosen option in the
+      /// last solve of this step's open-close iteration in which it was
+      /// closed; NaN before such a solve, and after one in which it was
+      /// open or that gave it another option. A law whose forces lag one solve behind
+      /// (force_lags()) takes them from it; no stiffness may depend on it.
+      double solved_gap = std::numeric_limits<double>::quiet_NaN();
     };
 
     /**
@@ -368,6 +375,22 @@ namespace ndda
                            const ContactState    &contact,
                            const Trial           &trial,
                            const ContactSettings &settings) const;
+
+      /**
+       * Whether a force that add_springs() gave a contact for the solve
+       * that produced @p trial (in state @p contact.state, from
+       * @p contact.solved_gap, the gap of the solve before) lagged behind
+       * that solve by more than the law accepts. If so for any contact,
+       * the open-close iteration solves again in the same states
+       * (OpenCloseSolver; such solves do not count towards its limit on
+       * state changes). Called before the contact is classified. The
+       * default: no force of the law lags (false).
+       */
+      virtual bool
+      force_lags(const Option          &o,
+                 const ContactState    &contact,
+                 const Trial           &trial,
+                 const ContactSettings &settings) const;
 
       /** For messages (PluginRegistry). */
       static const char *

@@ -33,18 +33,27 @@ namespace ndda
      * breaks for good and goes on as a plain contact (doc/contact.md,
      * "Bonded joints").
      *
-     * The law has no entries of its own: k_n, the shear ratio, mu and the
-     * joint strength come from subsections Contact and Materials, as they
-     * did before contact laws were plugins.
+     * k_n, the shear ratio, mu and the joint strength come from
+     * subsections Contact and Materials, as they did before contact laws
+     * were plugins. The law's own entries (`subsection penalty Coulomb`)
+     * choose lagged friction: a sliding contact's friction then takes the
+     * normal force of the open-close iteration's solve before, as in
+     * Shi's DDA, and is a force on the right-hand side alone, so that the
+     * matrix stays symmetric; force_lags() makes the iteration solve
+     * again until that normal force has settled (doc/contact.md,
+     * "Lagged friction").
      *
      * @ingroup contact
      */
     class PenaltyCoulomb : public ContactLaw
     {
     public:
-      /** Declares nothing: the law's data come with ContactSettings. */
+      /** Declares `Lagged friction` and its tolerance. */
       static void
       declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
 
       void
       add_springs(const Option               &o,
@@ -105,6 +114,30 @@ namespace ndda
                            const ContactState    &contact,
                            const Trial           &trial,
                            const ContactSettings &settings) const override;
+
+      /**
+       * With lagged friction, true for a sliding contact whose normal
+       * force (-k_n times the gap, clamped at 0) in the solve of
+       * @p trial differs from the one its friction took by more than the
+       * tolerance times the larger of the two (plus the state tolerance).
+       */
+      bool
+      force_lags(const Option          &o,
+                 const ContactState    &contact,
+                 const Trial           &trial,
+                 const ContactSettings &settings) const override;
+
+    private:
+      /** The gap a sliding contact's lagged friction takes its normal
+       * force from: the last solve's, the step's start before the first;
+       * clamped at 0 (no friction in tension). */
+      double
+      friction_gap(const Option &o, const ContactState &contact) const;
+
+      /// Friction from the normal force of the solve before.
+      bool lagged_friction = false;
+      /// Relative change of that normal force accepted as settled.
+      double lag_tolerance = 1e-3;
     };
   } // namespace contact
 } // namespace ndda
