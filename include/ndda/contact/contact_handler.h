@@ -211,24 +211,15 @@ namespace ndda
       void
       start_forces(dealii::Vector<double> &force) const;
 
-      /**
-       * Classify every contact from the solution @p d of the last solve
+      /** Classify every contact from the solution @p d of the last solve
        * (thesis's open-close criteria, Coulomb limit, vertex-vertex
-       * resolution). Returns true if any state changed, i.e. another solve
-       * is needed.
-       */
+       * resolution); true if any state changed: another solve is needed. */
       bool
       update_states(const dealii::Vector<double> &d);
 
-      /**
-       * If a force of the contact law lagged behind the solve @p d by more
-       * than the law accepts (ContactLaw::force_lags(): lagged friction
-       * whose normal force has not settled), record the normal gaps of
-       * @p d for the closed contacts (their ContactState::solved_gap) and
-       * return true: the open-close iteration then solves again in the
-       * same states, before it classifies the contacts. Else change
-       * nothing and return false.
-       */
+      /** If a force of the law lagged behind the solve @p d (ContactLaw::
+       * force_lags()), record the closed contacts' gaps of @p d as their
+       * solved_gap and return true: solve again in the same states. */
       bool
       settle_lagging_forces(const dealii::Vector<double> &d);
 
@@ -247,7 +238,6 @@ namespace ndda
       {
         return one_way;
       }
-
 
       /** Largest penetration (m) at the end of the step with increment
        * @p d, over the closed contacts. */

@@ -168,8 +168,9 @@ namespace ndda
       /// The normal gap (m) of the contact on its chosen option in the
       /// last solve of this step's open-close iteration in which it was
       /// closed; NaN before such a solve, and after one in which it was
-      /// open or that gave it another option. A law whose forces lag one solve behind
-      /// (force_lags()) takes them from it; no stiffness may depend on it.
+      /// open or that gave it another option. A law whose forces lag one solve
+      /// behind (force_lags()) takes them from it; no stiffness may depend on
+      /// it.
       double solved_gap = std::numeric_limits<double>::quiet_NaN();
     };
 
