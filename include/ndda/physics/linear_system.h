@@ -107,8 +107,13 @@ namespace ndda
      * come and go near the detection distance keep the symbolic analysis
      * (UMFPACK) or pivot order (KLU) of the solver. When it holds more
      * than twice the couplings in use, it is rebuilt with these only.
-     * Returns whether it was rebuilt: the matrices are then zero, and
-     * assemble() must be called.
+     * A compact system rebuilds only the compact pattern, from the
+     * element part kept at reinit() and the couplings expanded in compact
+     * unknowns, and refills its matrix without springs: its entries are
+     * those the whole pattern condensed would give, and the matrices on
+     * all dofs, which no contact spring enters, keep theirs.
+     * Returns whether the matrices are zero, so that assemble() must be
+     * called (a rebuilt pattern that is not compact).
      */
     bool
     update_contact_couplings(
@@ -299,7 +304,8 @@ namespace ndda
     prune_mass_matrix();
 
     /** Condense @p dsp, make it the sparsity pattern, and reinit every
-     * matrix on it (their entries are zero then). */
+     * matrix on it (their entries are zero then); a compact system keeps
+     * its compact pattern as the element part (compact_element_pattern). */
     void
     reinit_matrices(DynamicSparsityPattern &dsp,
                     const Constraints      &constraints);
@@ -316,8 +322,12 @@ namespace ndda
 
     SectionTimer *timer = nullptr;
 
-    /// Couplings of elements and bolts, before contacts and condensation.
+    /// Couplings of elements and bolts, before contacts and condensation
+    /// (with contacts, unless compact).
     SparsityPattern element_sparsity;
+    /// The compact pattern of the elements and bolts, without contacts
+    /// (compact, with contacts).
+    SparsityPattern compact_element_pattern;
     /// The (vertex, cell) contact couplings the sparsity pattern holds.
     std::vector<std::pair<unsigned int, unsigned int>> pattern_couplings;
     SparsityPattern                                    sparsity_pattern;
@@ -350,7 +360,9 @@ namespace ndda
     /// system matrix on them (once per prepare_step() that changes it),
     /// and that matrix with the contact springs of the solve, which the
     /// solver then gets.
-    bool                                 compact = false;
+    bool compact = false;
+    /// reinit() was told the scene has contacts.
+    bool                                 with_contacts = false;
     std::vector<types::global_dof_index> free_dofs;
     std::vector<types::global_dof_index> compact_index;
     SparsityPattern                      compact_pattern;
@@ -413,6 +425,20 @@ namespace ndda
     /** The expansion of every dof in compact unknowns (reinit). */
     void
     setup_expansion(const AffineConstraints<double> &affine);
+
+    /** Rebuild the compact pattern: the element part and the (vertex,
+     * cell) contact @p couplings expanded in compact unknowns; reinit
+     * the compact matrices on it, and refill compact_base unless
+     * prepare_step() will. */
+    void
+    update_compact_couplings(
+      const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
+      const DofMap                                             &dof_map);
+
+    /** Copy the condensed base matrix's entries on the free dofs into
+     * compact_base. */
+    void
+    fill_compact_base();
 
     /**
      * Add the dense spring block @p k on the dofs @p dofs to the compact
