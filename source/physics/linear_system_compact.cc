@@ -79,18 +79,29 @@ namespace ndda
           }
         plan.row_start.push_back(plan.position.size());
       }
+    for (const auto c : columns)
+      slot[c] = numbers::invalid_unsigned_int;
+    plan.columns.assign(columns.begin(), columns.end());
+    locate_compact_entries(plan);
+  }
+
+
+
+  void
+  LinearSystem::locate_compact_entries(CompactPlan &plan) const
+  {
     // Where the m x m entries are among the compact matrix's values (the
     // contact couplings are in its pattern: a missing one is an error).
+    const unsigned int m = plan.m;
     plan.entries.resize(m * m);
     for (unsigned int a = 0; a < m; ++a)
       for (unsigned int b = 0; b < m; ++b)
         {
-          const auto entry = compact_pattern(columns[a], columns[b]);
+          const auto entry = compact_pattern(plan.columns[a], plan.columns[b]);
           Assert(entry != SparsityPattern::invalid_entry, ExcInternalError());
           plan.entries[a * m + b] = entry;
         }
-    for (const auto c : columns)
-      slot[c] = numbers::invalid_unsigned_int;
+    plan.pattern_version = compact_pattern_version;
   }
 
 
@@ -114,6 +125,8 @@ namespace ndda
           return false;
         make_compact_plan(dofs, plan);
       }
+    else if (plan.pattern_version != compact_pattern_version)
+      locate_compact_entries(plan);
     if (k == nullptr && !plan.has_block)
       return false;
     const unsigned int m = plan.m;
@@ -185,12 +198,24 @@ namespace ndda
       std::sort(columns.begin(), columns.end());
       columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
     };
+    // The couplings come sorted by vertex: a vertex is expanded once, and
+    // a cell whose expansion is that of the cell before (a rigid or
+    // affine block's cells) adds nothing new.
+    std::vector<types::global_dof_index> last_cell_columns;
+    auto last_vertex = numbers::invalid_unsigned_int;
     for (const auto &[vertex, cell] : couplings)
       {
-        expand(dof_map.vertex_dofs[vertex], vertex_columns);
+        if (vertex != last_vertex)
+          {
+            expand(dof_map.vertex_dofs[vertex], vertex_columns);
+            last_vertex = vertex;
+            last_cell_columns.clear();
+          }
         expand(ArrayView<const types::global_dof_index>(
                  dof_map.dofs_of_cell(cell), dof_map.dofs_per_cell),
                cell_columns);
+        if (cell_columns == last_cell_columns)
+          continue;
         for (const auto a : vertex_columns)
           dsp.add_entries(a, cell_columns.begin(), cell_columns.end(), true);
         for (const auto b : cell_columns)
@@ -198,11 +223,14 @@ namespace ndda
                           vertex_columns.begin(),
                           vertex_columns.end(),
                           true);
+        last_cell_columns.swap(cell_columns);
       }
     compact_pattern.copy_from(dsp);
     compact_base.reinit(compact_pattern);
     compact_matrix.reinit(compact_pattern);
-    compact_plans.clear();
+    // The plans keep their expansions and blocks, and find their entries
+    // anew when next used (add_to_compact()).
+    ++compact_pattern_version;
     // The base matrix's values are those of before, on a larger pattern:
     // a new matrix for the solver, as a rebuilt one would be.
     if (!matrices_changed)

@@ -385,6 +385,10 @@ namespace ndda
     {
       std::vector<types::global_dof_index> dofs;
       unsigned int                         m = 0;
+      /// The m compact unknowns (sorted), and the compact pattern's
+      /// version the entries were located in.
+      std::vector<types::global_dof_index> columns;
+      unsigned int                         pattern_version = 0;
       std::vector<unsigned int>            row_start, position;
       std::vector<double>                  weight;
       std::vector<std::size_t>             entries;
@@ -405,7 +409,8 @@ namespace ndda
     /// the rows that g moves, with their entries of b before the lifting.
     double                                                  constraint_work = 0;
     std::vector<std::pair<types::global_dof_index, double>> g_rows;
-    /// The plans by the callers' numbers; cleared with the compact pattern.
+    /// The plans by the callers' numbers; cleared when the expansion
+    /// changes (reinit), kept when only the contact couplings do.
     std::vector<CompactPlan> compact_plans;
     /// Buffers of add_to_compact().
     struct
@@ -416,6 +421,13 @@ namespace ndda
       std::vector<unsigned int> slot;
       std::vector<double>       kt;
     } scratch;
+
+    /// Counts the compact patterns built (update_compact_couplings()).
+    unsigned int compact_pattern_version = 0;
+
+    /** Find the positions of @p plan's entries in the compact pattern. */
+    void
+    locate_compact_entries(CompactPlan &plan) const;
 
     /** Make @p plan for a block on @p dofs. */
     void
