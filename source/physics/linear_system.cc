@@ -186,12 +186,18 @@ namespace ndda
                    couplings.begin(),
                    couplings.end(),
                    std::back_inserter(merged));
-    if (merged.size() > 2 * couplings.size() + 16)
+    const bool shrink = merged.size() > 2 * couplings.size() + 16;
+    if (shrink)
       merged = couplings;
     const auto section = scope(timer, "sparsity");
     if (compact)
       {
-        update_compact_couplings(merged, dof_map);
+        // New couplings between blocks already coupled (another vertex,
+        // another cell of a reduced block) expand to entries the compact
+        // pattern has: it stays as it is, and with it the matrices, the
+        // plans' entries and the solver's analysis.
+        if (shrink || !compact_pattern_holds(couplings, dof_map))
+          update_compact_couplings(merged, dof_map);
         pattern_couplings.swap(merged);
         return false;
       }

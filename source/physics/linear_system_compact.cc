@@ -168,6 +168,56 @@ namespace ndda
 
 
   void
+  LinearSystem::expand_in_compact(
+    const ArrayView<const types::global_dof_index> &dofs,
+    std::vector<types::global_dof_index>           &columns) const
+  {
+    columns.clear();
+    for (const auto i : dofs)
+      for (auto e = expansion_start[i]; e < expansion_start[i + 1]; ++e)
+        columns.push_back(expansion_column[e]);
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+  }
+
+
+
+  bool
+  LinearSystem::compact_pattern_holds(
+    const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
+    const DofMap                                             &dof_map) const
+  {
+    // Those not in the pattern's couplings (both lists sorted); the
+    // compact pattern is symmetric, so one of (a, b) and (b, a) tells.
+    std::vector<std::pair<unsigned int, unsigned int>> added;
+    std::set_difference(couplings.begin(),
+                        couplings.end(),
+                        pattern_couplings.begin(),
+                        pattern_couplings.end(),
+                        std::back_inserter(added));
+    std::vector<types::global_dof_index> vertex_columns, cell_columns;
+    auto last_vertex = numbers::invalid_unsigned_int;
+    for (const auto &[vertex, cell] : added)
+      {
+        if (vertex != last_vertex)
+          {
+            expand_in_compact(dof_map.vertex_dofs[vertex], vertex_columns);
+            last_vertex = vertex;
+          }
+        expand_in_compact(ArrayView<const types::global_dof_index>(
+                            dof_map.dofs_of_cell(cell), dof_map.dofs_per_cell),
+                          cell_columns);
+        for (const auto a : vertex_columns)
+          for (const auto b : cell_columns)
+            if (!compact_pattern.exists(a, b))
+              return false;
+      }
+    return true;
+  }
+
+
+
+  void
   LinearSystem::update_compact_couplings(
     const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
     const DofMap                                             &dof_map)
@@ -189,15 +239,6 @@ namespace ndda
         std::sort(row.begin(), row.end());
         dsp.add_entries(r, row.begin(), row.end(), true);
       }
-    const auto expand = [&](const auto                           &dofs,
-                            std::vector<types::global_dof_index> &columns) {
-      columns.clear();
-      for (const auto i : dofs)
-        for (auto e = expansion_start[i]; e < expansion_start[i + 1]; ++e)
-          columns.push_back(expansion_column[e]);
-      std::sort(columns.begin(), columns.end());
-      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-    };
     // The couplings come sorted by vertex: a vertex is expanded once, and
     // a cell whose expansion is that of the cell before (a rigid or
     // affine block's cells) adds nothing new.
@@ -207,13 +248,13 @@ namespace ndda
       {
         if (vertex != last_vertex)
           {
-            expand(dof_map.vertex_dofs[vertex], vertex_columns);
+            expand_in_compact(dof_map.vertex_dofs[vertex], vertex_columns);
             last_vertex = vertex;
             last_cell_columns.clear();
           }
-        expand(ArrayView<const types::global_dof_index>(
-                 dof_map.dofs_of_cell(cell), dof_map.dofs_per_cell),
-               cell_columns);
+        expand_in_compact(ArrayView<const types::global_dof_index>(
+                            dof_map.dofs_of_cell(cell), dof_map.dofs_per_cell),
+                          cell_columns);
         if (cell_columns == last_cell_columns)
           continue;
         for (const auto a : vertex_columns)

@@ -111,7 +111,9 @@ namespace ndda
      * element part kept at reinit() and the couplings expanded in compact
      * unknowns, and refills its matrix without springs: its entries are
      * those the whole pattern condensed would give, and the matrices on
-     * all dofs, which no contact spring enters, keep theirs.
+     * all dofs, which no contact spring enters, keep theirs. New
+     * couplings that expand to entries it has (two reduced blocks already
+     * coupled) leave it as it is.
      * Returns whether the matrices are zero, so that assemble() must be
      * called (a rebuilt pattern that is not compact).
      */
@@ -262,6 +264,43 @@ namespace ndda
     has_damping() const
     {
       return damped;
+    }
+
+    /** Whether the solver gets the compact system (reinit()). */
+    bool
+    is_compact() const
+    {
+      return compact;
+    }
+
+    /** The compact system's pattern, on the unconstrained dofs
+     * (get_free_dofs(), in that order); valid if is_compact(). */
+    const SparsityPattern &
+    get_compact_pattern() const
+    {
+      return compact_pattern;
+    }
+
+    /** The unconstrained dofs, in the order of the compact system. */
+    const std::vector<types::global_dof_index> &
+    get_free_dofs() const
+    {
+      return free_dofs;
+    }
+
+    /** The (vertex, cell) contact couplings the pattern holds (sorted). */
+    const std::vector<std::pair<unsigned int, unsigned int>> &
+    get_contact_couplings() const
+    {
+      return pattern_couplings;
+    }
+
+    /** How many times the compact pattern has been built anew for new
+     * contact couplings (update_contact_couplings()), in all. */
+    unsigned int
+    n_compact_pattern_builds() const
+    {
+      return compact_pattern_version;
     }
 
     unsigned int
@@ -446,6 +485,19 @@ namespace ndda
     update_compact_couplings(
       const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
       const DofMap                                             &dof_map);
+
+    /** The compact unknowns that @p dofs expand to, sorted, in
+     * @p columns. */
+    void
+    expand_in_compact(const ArrayView<const types::global_dof_index> &dofs,
+                      std::vector<types::global_dof_index> &columns) const;
+
+    /** Whether the compact pattern has every entry of the (vertex, cell)
+     * @p couplings that the pattern's couplings do not have. */
+    bool
+    compact_pattern_holds(
+      const std::vector<std::pair<unsigned int, unsigned int>> &couplings,
+      const DofMap                                             &dof_map) const;
 
     /** Copy the condensed base matrix's entries on the free dofs into
      * compact_base. */
