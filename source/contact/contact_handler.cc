@@ -369,8 +369,10 @@ namespace ndda
     bool
     ContactHandler::settle_lagging_forces(const dealii::Vector<double> &d)
     {
-      const ContactLaw &law  = *settings.law;
-      bool              lags = false;
+      const ContactLaw &law = *settings.law;
+      if (!law.forces_may_lag())
+        return false;
+      bool lags = false;
       for (const ContactPair &c : contacts)
         if (c.chosen != invalid && !c.shadowed &&
             law.force_lags(

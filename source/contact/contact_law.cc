@@ -84,6 +84,14 @@ namespace ndda
 
 
 
+    bool
+    ContactLaw::forces_may_lag() const
+    {
+      return true;
+    }
+
+
+
     void
     register_contact_law(const std::string &name,
                          const std::string &description,

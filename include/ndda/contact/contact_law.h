@@ -393,6 +393,15 @@ namespace ndda
                  const Trial           &trial,
                  const ContactSettings &settings) const;
 
+      /**
+       * Whether force_lags() can be true for any contact with the law's
+       * parameters: false lets the open-close iteration skip asking each
+       * contact after every solve. The default: true, so that a law that
+       * overrides force_lags() need not override this too.
+       */
+      virtual bool
+      forces_may_lag() const;
+
       /** For messages (PluginRegistry). */
       static const char *
       plugin_kind()

@@ -127,6 +127,13 @@ namespace ndda
                  const Trial           &trial,
                  const ContactSettings &settings) const override;
 
+      /** With lagged friction only. */
+      bool
+      forces_may_lag() const override
+      {
+        return lagged_friction;
+      }
+
     private:
       /** The gap a sliding contact's lagged friction takes its normal
        * force from: the last solve's, the step's start before the first;
