@@ -21,9 +21,9 @@
 //  - LinearSolver's GMRES with an earlier factorization (UMFPACK and KLU):
 //    on a matrix that differs from the factorized one by a change of rank
 //    3 and of rank 8 (past the fifth iteration's orthogonality check), the
-//    same iterations and the same iterate, to the last bit, as deal.II's
-//    SolverGMRES with right preconditioning; a change of every row that
-//    would take more iterations than it may is refused (0).
+//    same iterations as deal.II's SolverGMRES with right preconditioning,
+//    the same solution to 1e-10 and a residual within 1e-12; a change of
+//    every row that would take more iterations than it may is refused (0).
 
 #include <deal.II/grid/grid_generator.h>
 
@@ -587,19 +587,22 @@ namespace
           SolverGMRES<Vector<double>>::AdditionalData(limit + 2, true));
         Vector<double> y(n);
         gmres.solve(a1, y, b, Factorization{&solver});
+        // Flexible GMRES with the factorization searches the Krylov space
+        // of SolverGMRES with right preconditioning.
         check(iterations == control.last_step(),
               name + ": GMRES takes SolverGMRES's iterations");
-        bool same = true;
-        for (unsigned int i = 0; i < n; ++i)
-          same = same && x[i] == y[i];
-        check(same, name + ": GMRES gives SolverGMRES's iterate to the bit");
+        Vector<double> difference(y);
+        difference -= x;
+        check(difference.l2_norm() <= 1e-10 * y.l2_norm(),
+              name + ": GMRES gives SolverGMRES's solution");
         Vector<double> residual(n);
         a1.vmult(residual, x);
         residual -= b;
         check(residual.l2_norm() <= 1e-12 * b.l2_norm(),
               name + ": GMRES converged");
         std::cout << " rank " << rank << " change: " << iterations
-                  << " iterations as SolverGMRES, same iterate;";
+                  << " solves with the factors, SolverGMRES "
+                  << control.last_step() << ", the same solution;";
       }
   }
 } // namespace

@@ -72,12 +72,13 @@ namespace ndda
         "Reused factorization iterations",
         "10",
         Patterns::Integer(0, 100),
-        "With UMFPACK or KLU: a system whose contact springs changed is first "
-        "solved by GMRES preconditioned with the last factorization, and "
-        "factorized anew only if GMRES needs more than this many "
-        "iterations, or more than a factorization costs in iterations "
-        "where that is more (at most 100; the result is the same to a "
-        "relative residual of 1e-12). 0: factorize every changed system.");
+        "With a direct solver: a system whose contact springs changed is "
+        "first solved by GMRES preconditioned with the last factorization, "
+        "and factorized anew if GMRES would need more than this many "
+        "solves with the factors, or more than a factorization costs in "
+        "them where that is more (at most 100; it gives up as soon as its "
+        "rate shows it; the result is the same to a relative residual of "
+        "1e-12). 0: factorize every changed system.");
       prm.declare_entry("Vertex-vertex method",
                         "revised",
                         Patterns::Selection("revised|shortest path"),

@@ -323,9 +323,10 @@ namespace ndda
     /**
      * GMRES on @p matrix x = b from x = 0, preconditioned on the right by
      * @p preconditioner (a solve with an earlier factorization), to the
-     * residual @p tolerance |b| within @p min_iterations, or within
-     * @p max_iterations while its mean rate promises to get there
-     * (internal::ReuseControl). Returns the iterations (at least 1), or 0
+     * residual
+     * @p tolerance |b| within @p max_iterations solves with the
+     * preconditioner, while its rate promises to get there
+     * (internal::ReuseControl). Returns those solves (at least 1), or 0
      * if it did not get there.
      */
     template <class Preconditioner>
@@ -336,7 +337,6 @@ namespace ndda
                Vector<double>             &x,
                const Vector<double>       &b,
                const Preconditioner       &preconditioner,
-               const unsigned int          min_iterations,
                const unsigned int          max_iterations,
                const double                tolerance)
     {
@@ -345,11 +345,11 @@ namespace ndda
       if (norm == 0.)
         return 1;
       // Right preconditioning: GMRES then watches the true residual.
-      control.reset(max_iterations, min_iterations, tolerance, norm);
+      control.reset(max_iterations, tolerance, norm);
       if (!gmres.solve(
             matrix, x, b, preconditioner, control, max_iterations + 2))
         return 0;
-      return std::max(1u, control.last_step());
+      return std::max(1u, gmres.n_preconditioner_solves());
     }
   } // namespace
 
@@ -573,7 +573,6 @@ namespace ndda
                         x,
                         b,
                         preconditioner,
-                        min_iterations,
                         reuse_limit(min_iterations),
                         tolerance);
     };
@@ -614,7 +613,6 @@ namespace ndda
                       x,
                       b,
                       Preconditioner{distributed.get()},
-                      min_iterations,
                       reuse_limit(min_iterations),
                       tolerance);
   }

@@ -79,14 +79,14 @@ namespace ndda
      * iterations, each one triangular solve and one product with the
      * matrix, instead of a new factorization.
      *
-     * GMRES may take @p min_iterations iterations, or more where a
-     * factorization costs more (solves_per_factorization(), at most 100);
-     * beyond @p min_iterations it gives up as soon as its residual,
-     * reduced at its mean rate so far, would not reach the tolerance
-     * within them.
+     * GMRES may take @p min_iterations solves with the factorization, or
+     * more where a factorization costs more (solves_per_factorization(),
+     * at most 100); from its fourth on it gives up as soon as neither its
+     * residual's mean rate since the first nor its rate over the last two
+     * would reach the tolerance within them.
      *
-     * Returns the number of GMRES iterations, or 0 if there is no such
-     * factorization or GMRES did not reduce the residual to @p tolerance
+     * Returns the solves with the factorization it took, or 0 if there is no
+     * such factorization or GMRES did not reduce the residual to @p tolerance
      * times |b| within its iterations; x is then undefined, and the
      * caller factorizes the matrix instead.
      */
