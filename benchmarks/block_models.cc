@@ -269,6 +269,22 @@ end
       }
     if (std::getenv("NDDA_TIMER_TABLE") != nullptr)
       simulator.get_timer().print_summary(std::cerr);
+    // Where the wall ends: at rest if it stands (a ramped start), its
+    // kinetic energy against the work of its weight over its largest
+    // settlement.
+    {
+      const double settlement = simulator.get_displacement().linfty_norm();
+      const double weight     = density * 9.81 * 0.5 * courses * length;
+      std::cerr << "  " << model << " " << courses << " x " << length
+                << " at the end: t = " << simulator.get_time() << " s, step "
+                << simulator.get_step_number() << ", largest displacement "
+                << settlement << " m, largest speed "
+                << simulator.get_velocity().linfty_norm()
+                << " m/s, kinetic energy " << simulator.kinetic_energy()
+                << " J = " << simulator.kinetic_energy() / (weight * settlement)
+                << " of weight x largest displacement, energy error "
+                << simulator.energy_error() << " J" << std::endl;
+    }
     double total = 0;
     for (const double t : times)
       total += t;

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parallel.h>
 
 #include <deal.II/numerics/rtree.h>
 
@@ -275,11 +276,32 @@ namespace ndda
         threshold + std::max(skin_factor * threshold, min_skin);
       if (!covers(vertices, edges, threshold, wanted))
         build(vertices, edges, wanted);
+      // The tests on deal.II's threads in chunks, each chunk's candidates
+      // into a list of its own; the lists joined in the order of the tests.
+      const std::size_t  chunk    = 4096;
+      const unsigned int n_chunks = (tests.size() + chunk - 1) / chunk;
+      std::vector<std::vector<Candidate>> found(n_chunks);
+      dealii::parallel::apply_to_subranges(
+        0u,
+        n_chunks,
+        [&](const unsigned int begin, const unsigned int end) {
+          Candidate candidate;
+          for (unsigned int k = begin; k < end; ++k)
+            for (std::size_t i = k * chunk;
+                 i < std::min(tests.size(), (k + 1) * chunk);
+                 ++i)
+              if (vertex_edge_candidate(vertices,
+                                        tests[i].first,
+                                        edges,
+                                        tests[i].second,
+                                        threshold,
+                                        candidate))
+                found[k].push_back(candidate);
+        },
+        1);
       std::vector<Candidate> candidates;
-      Candidate              candidate;
-      for (const auto &[v, e] : tests)
-        if (vertex_edge_candidate(vertices, v, edges, e, threshold, candidate))
-          candidates.push_back(candidate);
+      for (const auto &f : found)
+        candidates.insert(candidates.end(), f.begin(), f.end());
       return candidates;
     }
   } // namespace contact

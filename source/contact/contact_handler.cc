@@ -7,6 +7,7 @@
 // springs and the classification come from the contact law.
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/parallel.h>
 
 #include <deal.II/lac/full_matrix.h>
 
@@ -21,6 +22,49 @@ namespace ndda
 {
   namespace contact
   {
+    namespace
+    {
+      /// Contacts a thread takes at a time in the passes over all of them.
+      constexpr unsigned int grain_size = 512;
+
+      /**
+       * The largest depth of the contacts with a chosen option (@p
+       * closed_only: of the closed ones) under @p d, 0 if none is deeper.
+       * Each contact's depth on deal.II's threads, the largest on one (a
+       * maximum is the same in any order).
+       */
+      template <typename Pairs>
+      double
+      largest_depth(const Pairs                  &contacts,
+                    const dealii::Vector<double> &d,
+                    const unsigned int            invalid,
+                    const bool                    closed_only)
+      {
+        const unsigned int  n = contacts.size();
+        std::vector<double> depths(n, 0.);
+        dealii::parallel::apply_to_subranges(
+          0u,
+          n,
+          [&](const unsigned int begin, const unsigned int end) {
+            for (unsigned int i = begin; i < end; ++i)
+              {
+                const auto &c = contacts[i];
+                if (c.chosen != invalid &&
+                    (!closed_only || c.state == State::locked ||
+                     c.state == State::sliding))
+                  depths[i] = -c.options[c.chosen].normal_gap(d) - c.offset;
+              }
+          },
+          grain_size);
+        double depth = 0;
+        for (const double x : depths)
+          depth = std::max(depth, x);
+        return depth;
+      }
+    } // namespace
+
+
+
     void
     ContactHandler::initialize(const std::vector<BoundaryEdge> &edges_in,
                                const std::vector<double>       &friction_in,
@@ -350,16 +394,34 @@ namespace ndda
     bool
     ContactHandler::update_states(const dealii::Vector<double> &d)
     {
+      // Each contact on deal.II's threads: its update reads d and the
+      // settings and writes that contact alone, and the contact law's
+      // functions are const (doc/library.md). What the iteration learns of
+      // all of them is an or (changed) and an and (one way), the same in
+      // any order.
+      const unsigned int n = contacts.size();
+      std::vector<char>  flags(n, 0);
+      dealii::parallel::apply_to_subranges(
+        0u,
+        n,
+        [&](const unsigned int begin, const unsigned int end) {
+          for (unsigned int i = begin; i < end; ++i)
+            {
+              ContactPair &c      = contacts[i];
+              const bool   change = c.chosen == invalid ?
+                                      resolve_pair(c, d) :
+                                      !c.shadowed && update_state(c, d);
+              if (change)
+                flags[i] = c.visit() ? 2 : 1;
+            }
+        },
+        grain_size);
       bool changed = false;
       one_way      = true;
-      for (ContactPair &c : contacts)
+      for (const char f : flags)
         {
-          const bool change = c.chosen == invalid ?
-                                resolve_pair(c, d) :
-                                !c.shadowed && update_state(c, d);
-          if (change)
-            one_way = !c.visit() && one_way;
-          changed = change || changed;
+          changed = changed || f != 0;
+          one_way = one_way && f != 2;
         }
       return changed;
     }
@@ -462,12 +524,7 @@ namespace ndda
     double
     ContactHandler::max_penetration(const dealii::Vector<double> &d) const
     {
-      double p = 0;
-      for (const ContactPair &c : contacts)
-        if (c.chosen != invalid &&
-            (c.state == State::locked || c.state == State::sliding))
-          p = std::max(p, -c.options[c.chosen].normal_gap(d) - c.offset);
-      return p;
+      return largest_depth(contacts, d, invalid, true);
     }
 
 
@@ -475,12 +532,7 @@ namespace ndda
     double
     ContactHandler::max_depth(const dealii::Vector<double> &d) const
     {
-      double depth = 0;
-      for (const ContactPair &c : contacts)
-        if (c.chosen != invalid)
-          depth =
-            std::max(depth, -c.options[c.chosen].normal_gap(d) - c.offset);
-      return depth;
+      return largest_depth(contacts, d, invalid, false);
     }
 
 

@@ -251,7 +251,10 @@ namespace ndda
      * object may serve every contact of a scene. The scene-wide data (the
      * penalty stiffness, which the automatic penalty changes during a run;
      * the shear stiffness ratio; the state tolerance; the joint strength)
-     * come with every call in the ContactSettings.
+     * come with every call in the ContactSettings. The handler calls
+     * classify(), bond_holds() and anchor_on_locking() for different
+     * contacts on several threads at once: they must not change anything
+     * but what they return (no caches, no counters).
      *
      * A law is a plugin in the style of ASPECT: a class derived from this
      * one, with a static `declare_parameters(ParameterHandler &)` that
