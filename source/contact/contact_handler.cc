@@ -396,9 +396,10 @@ namespace ndda
     {
       // Each contact on deal.II's threads: its update reads d and the
       // settings and writes that contact alone, and the contact law's
-      // functions are const (doc/library.md). What the iteration learns of
-      // all of them is an or (changed) and an and (one way), the same in
-      // any order.
+      // functions may be called for several contacts at once
+      // (doc/contact.md, "Contact laws"). What the iteration learns of all
+      // of them is an or (changed) and an and (one way), the same in any
+      // order.
       const unsigned int n = contacts.size();
       std::vector<char>  flags(n, 0);
       dealii::parallel::apply_to_subranges(
