@@ -23,7 +23,7 @@
 // Last, contacts. The passes over all contacts (the narrow phase of the
 // detection, the states after each solve, the largest depths) run on the
 // threads too, each contact into its own slot. A staggered wall of 1,000
-// rigid bricks (about 4,000 contacts: several tasks each) drops under
+// rigid bricks (more than 3,000 contacts: several tasks each) drops under
 // gravity switched on at once, on 1, 2 and 3 threads; the displacement,
 // velocity and the contact counts of every step (candidates, contacts,
 // closed, sliding, open-close iterations) must agree to the last bit.
