@@ -3,8 +3,9 @@
 // Cost of a time step against the number of blocks, per block kinematics
 // model (issue 15): staggered dry-stone walls of 1 m x 0.5 m bricks as in
 // prm/brick_wall.prm (half bricks at the ends of every second course, a
-// fixed base, gravity, DDA, dt = 2 ms, penalty 10 E, friction 35 degrees,
-// KLU unless the third argument names another solver), with
+// fixed base, gravity, DDA, dt = 2 ms unless the ninth argument says
+// otherwise, penalty 10 E, friction 35 degrees, KLU unless the third
+// argument names another solver), with
 // `Control/Kinematics` = meshed, affine and rigid. Walls of
 // about 100, 1000, 10,000 and 100,000 bricks (courses x bricks per course:
 // 12 x 8, 25 x 40, 100 x 100, 100 x 1000).
@@ -38,9 +39,13 @@
 // 12 / courses, so that every wall has the 12-course wall's 0.06 m: the
 // same work per brick.
 //
-// The seventh argument `only` runs the largest wall alone. With
-// NDDA_TIMER_TABLE=1 each run's timer table (set-up and every step) goes
-// to the error stream.
+// The seventh argument `only` runs the largest wall alone; `prm` runs
+// nothing and writes the largest wall (with the first of the models) to
+// the standard output as a scene for build/ndda, which ends where the timed
+// steps would and writes the statistics columns of the postprocessors
+// `time step, contact, energy, wall time`: a run end to end, step by step.
+// With NDDA_TIMER_TABLE=1 each run's timer table (set-up and every step)
+// goes to the error stream.
 //
 // The eighth argument chooses where a sliding contact's friction takes its
 // normal force from: `same` (the default) the same solve, which makes the
@@ -48,12 +53,15 @@
 // Coulomb/Lagged friction, as Shi's DDA), which keeps it symmetric;
 // `lagged:x` the same with Lagged friction tolerance = x.
 //
+// The ninth argument is the time step (s; default 2e-3). The ramp and the
+// untimed start are simulated times and do not change with it.
+//
 // Usage: block_models [steps] [largest wall: 1, 2, 3 or 4] [linear solver]
 //                     [models, comma-separated] [ramped | sudden]
-//                     [scene | brick | motion] [all | only]
-//                     [same | lagged | lagged:tolerance]
+//                     [scene | brick | motion] [all | only | prm]
+//                     [same | lagged | lagged:tolerance] [time step]
 //        (default 50, 2, KLU, meshed,affine,rigid, ramped, motion, all,
-//        same)
+//        same, 2e-3)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -75,6 +83,12 @@
 
 namespace
 {
+  /** The walls, courses x bricks per course. */
+  constexpr unsigned int wall_sizes[4][2] = {{12, 8},
+                                             {25, 40},
+                                             {100, 100},
+                                             {100, 1000}};
+
   /** Young's modulus and density of the bricks. */
   constexpr double youngs_modulus = 10e9, density = 2600;
 
@@ -97,7 +111,10 @@ namespace
        const double       ramp,
        const double       displacement_ratio,
        const std::string &detection,
-       const std::string &lag_tolerance)
+       const std::string &lag_tolerance,
+       const double       time_step,
+       const double       end_time,
+       const std::string &postprocessors)
   {
     const double       w = length, h = 0.5 * courses;
     std::ostringstream joints;
@@ -124,8 +141,10 @@ set Scene name = wall
 subsection Control
   set Analysis type   = dynamic
   set Time integrator = DDA
-  set Time step       = 2e-3
-  set End time        = 10
+  set Time step       = )"
+         << time_step << R"(
+  set End time        = )"
+         << end_time << R"(
   set Maximum displacement ratio = )"
          << displacement_ratio << R"(
   set Linear solver = )"
@@ -192,6 +211,9 @@ subsection Output
   set Write vtu = false
 end
 )";
+    if (!postprocessors.empty())
+      text << "subsection Postprocess\n  set List of postprocessors = "
+           << postprocessors << "\nend\n";
     return text.str();
   }
 
@@ -203,25 +225,42 @@ end
       const unsigned int steps,
       const bool         ramped,
       const std::string &detection,
-      const std::string &lag_tolerance)
+      const std::string &lag_tolerance,
+      const double       time_step,
+      const bool         write_scene)
   {
     const double ramp = ramped ? ramp_time(courses) : 0.;
     // Shi's detection distance is 2 x the ratio x half the scene's height:
     // 0.06 m for 12 courses, 0.5 m for 100. `brick` keeps it at 0.06 m.
     const double ratio = detection == "brick" ? 0.01 * 12. / courses : 0.01;
+    // The untimed start: ten steps, or one and a half ramps.
+    const unsigned int skip = 10;
+    const auto scene = [&](const double end_time, const std::string &output) {
+      return wall(courses,
+                  length,
+                  model,
+                  solver,
+                  ramp,
+                  ratio,
+                  detection == "motion" ? "motion" : "scene",
+                  lag_tolerance,
+                  time_step,
+                  end_time,
+                  output);
+    };
+    if (write_scene)
+      {
+        // The same run as a scene for build/ndda: it ends where the timed
+        // steps would.
+        std::cout << scene((ramped ? 1.5 * ramp : skip * time_step) +
+                             steps * time_step,
+                           "time step, contact, energy, wall time");
+        return;
+      }
     plain_system::reset_peak_rss();
     dealii::ParameterHandler     prm;
     ndda::parameters::Parameters parameters;
-    parameters.read(wall(courses,
-                         length,
-                         model,
-                         solver,
-                         ramp,
-                         ratio,
-                         detection == "motion" ? "motion" : "scene",
-                         lag_tolerance),
-                    "wall.prm",
-                    prm);
+    parameters.read(scene(10, ""), "wall.prm", prm);
     ndda::Simulator<2> simulator(parameters);
     const auto         start_setup = std::chrono::steady_clock::now();
     simulator.setup();
@@ -241,10 +280,8 @@ end
                 << plain_system::status_bytes("VmRSS") / 1e6 << " MB"
                 << std::endl;
     };
-    // The untimed start: ten steps, or one and a half ramps.
-    const unsigned int skip = 10;
-    double             time = 0;
-    unsigned int       step = 0;
+    double       time = 0;
+    unsigned int step = 0;
     for (; step < skip || time < 1.5 * ramp; ++step)
       {
         simulator.do_time_step();
@@ -301,7 +338,7 @@ end
               << double(cuts) / times.size() << std::setw(8)
               << double(simulator.n_factorizations() - factorizations) /
                    times.size()
-              << std::setw(8) << simulated / (2e-3 * times.size())
+              << std::setw(8) << simulated / (time_step * times.size())
               << std::setprecision(1) << std::setw(9) << setup
               << std::setprecision(0) << std::setw(9)
               << plain_system::status_bytes("VmHWM") / 1e6 << std::defaultfloat
@@ -315,14 +352,17 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const unsigned int steps     = argc > 1 ? std::atoi(argv[1]) : 50;
-  const unsigned int largest   = argc > 2 ? std::atoi(argv[2]) : 2;
-  const std::string  solver    = argc > 3 ? argv[3] : "KLU";
-  const std::string  models    = argc > 4 ? argv[4] : "meshed,affine,rigid";
-  const std::string  start     = argc > 5 ? argv[5] : "ramped";
-  const std::string  detection = argc > 6 ? argv[6] : "motion";
-  const bool         only      = argc > 7 && std::string(argv[7]) == "only";
-  const std::string  friction  = argc > 8 ? argv[8] : "same";
+  const unsigned int steps       = argc > 1 ? std::atoi(argv[1]) : 50;
+  const unsigned int largest     = argc > 2 ? std::atoi(argv[2]) : 2;
+  const std::string  solver      = argc > 3 ? argv[3] : "KLU";
+  const std::string  models      = argc > 4 ? argv[4] : "meshed,affine,rigid";
+  const std::string  start       = argc > 5 ? argv[5] : "ramped";
+  const std::string  detection   = argc > 6 ? argv[6] : "motion";
+  const std::string  which       = argc > 7 ? argv[7] : "all";
+  const std::string  friction    = argc > 8 ? argv[8] : "same";
+  const double       time_step   = argc > 9 ? std::atof(argv[9]) : 2e-3;
+  const bool         write_scene = which == "prm";
+  const bool         only        = which == "only" || write_scene;
   std::string        lag_tolerance;
   if (friction == "lagged")
     lag_tolerance = "1e-3";
@@ -349,7 +389,40 @@ main(int argc, char **argv)
                 << start << "'" << std::endl;
       return 1;
     }
-  const bool ramped = start == "ramped";
+  if (which != "all" && which != "only" && which != "prm")
+    {
+      std::cerr << "block_models: the seventh argument must be 'all', "
+                   "'only' or 'prm', not '"
+                << which << "'" << std::endl;
+      return 1;
+    }
+  if (!(time_step > 0.))
+    {
+      std::cerr << "block_models: the ninth argument, the time step, must be "
+                   "a positive number (s), not '"
+                << argv[9] << "'" << std::endl;
+      return 1;
+    }
+  const bool ramped   = start == "ramped";
+  const auto run_wall = [&](const unsigned int size, const std::string &model) {
+    run(wall_sizes[size][0],
+        wall_sizes[size][1],
+        model,
+        solver,
+        steps,
+        ramped,
+        detection,
+        lag_tolerance,
+        time_step,
+        write_scene);
+  };
+  if (write_scene)
+    {
+      // The scene of the largest wall with the first of the models.
+      run_wall(std::min(std::max(largest, 1u), 4u) - 1,
+               models.substr(0, models.find(',')));
+      return 0;
+    }
   if (ramped)
     std::cout << steps
               << " steps of each run after gravity was ramped over 8 "
@@ -367,18 +440,10 @@ main(int argc, char **argv)
             << std::setw(8) << "fact." << std::setw(8) << "dt/dt0"
             << std::setw(9) << "setup s" << std::setw(9) << "peak MB"
             << std::endl;
-  const unsigned int sizes[4][2] = {{12, 8}, {25, 40}, {100, 100}, {100, 1000}};
   for (unsigned int s = only ? std::min(largest, 4u) - 1 : 0;
        s < largest && s < 4;
        ++s)
     for (const std::string model : {"meshed", "affine", "rigid"})
       if (("," + models + ",").find("," + model + ",") != std::string::npos)
-        run(sizes[s][0],
-            sizes[s][1],
-            model,
-            solver,
-            steps,
-            ramped,
-            detection,
-            lag_tolerance);
+        run_wall(s, model);
 }
