@@ -235,6 +235,8 @@ end
     const double ratio = detection == "brick" ? 0.01 * 12. / courses : 0.01;
     // The untimed start: ten steps, or one and a half ramps.
     const unsigned int skip = 10;
+    const double       end_time =
+      std::max(skip * time_step, 1.5 * ramp) + steps * time_step;
     const auto scene = [&](const double end_time, const std::string &output) {
       return wall(courses,
                   length,
@@ -252,15 +254,14 @@ end
       {
         // The same run as a scene for build/ndda: it ends where the timed
         // steps would.
-        std::cout << scene((ramped ? 1.5 * ramp : skip * time_step) +
-                             steps * time_step,
-                           "time step, contact, energy, wall time");
+        std::cout << scene(end_time, "time step, contact, energy, wall time");
         return;
       }
     plain_system::reset_peak_rss();
     dealii::ParameterHandler     prm;
     ndda::parameters::Parameters parameters;
-    parameters.read(scene(10, ""), "wall.prm", prm);
+    // The run below stops itself; the scene ends two steps later.
+    parameters.read(scene(end_time + 2 * time_step, ""), "wall.prm", prm);
     ndda::Simulator<2> simulator(parameters);
     const auto         start_setup = std::chrono::steady_clock::now();
     simulator.setup();
