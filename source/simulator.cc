@@ -62,6 +62,7 @@ namespace ndda
     , console(this_process == 0 ? std::cout.rdbuf() : nullptr)
     , pcout(console, this_process == 0)
     , timer()
+    , mesh(this->communicator)
     , fem(mesh, timer)
   {
     set_up_threads();

@@ -31,6 +31,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <ndda/parallel/shared_mesh.h>
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -111,6 +113,13 @@ namespace
     Vector<double>                           displacement;
     /// Displacement, velocity and every stress component, in one list.
     std::vector<double> state;
+    /// At the end: the dofs of every cell, cell after cell.
+    std::vector<types::global_dof_index> cell_dofs;
+    /// At the end: whether the triangulation is shared among the
+    /// processes, and whether the cells and dofs each owns, by deal.II's
+    /// account, are OwnedCells' range and add up to all.
+    bool shared       = false;
+    bool owners_agree = false;
   };
 
   Run
@@ -143,6 +152,31 @@ namespace
       for (unsigned int i = 0; i < 2; ++i)
         for (unsigned int j = i; j < 2; ++j)
           result.state.push_back(sigma[i][j]);
+
+    const auto &dof_handler = simulator.get_dof_handler();
+    const auto &tria        = dof_handler.get_triangulation();
+    const auto &owned       = simulator.get_discretization().owned_cells;
+    std::vector<types::global_dof_index> dofs;
+    bool                                 owned_range = true;
+    unsigned int                         n_owned     = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        dofs.resize(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_indices(dofs);
+        result.cell_dofs.insert(result.cell_dofs.end(),
+                                dofs.begin(),
+                                dofs.end());
+        const auto c = cell->active_cell_index();
+        n_owned += cell->is_locally_owned() ? 1 : 0;
+        owned_range = owned_range && cell->is_locally_owned() ==
+                                       (c >= owned.begin() && c < owned.end());
+      }
+    result.shared = ndda::is_shared(tria);
+    result.owners_agree =
+      Utilities::MPI::min(owned_range ? 1u : 0u, communicator) == 1 &&
+      Utilities::MPI::sum(n_owned, communicator) == tria.n_active_cells() &&
+      Utilities::MPI::sum(dof_handler.n_locally_owned_dofs(), communicator) ==
+        dof_handler.n_dofs();
     return result;
   }
 
@@ -187,6 +221,16 @@ namespace
     check(direct.steps == reference.steps &&
             direct.crack_edges == reference.crack_edges,
           name + ", direct: the same contact states and cracks");
+    // The mesh on several processes: deal.II's shared triangulation, each
+    // process owning OwnedCells' range, the dofs numbered as on one.
+    check(!reference.shared && reference.owners_agree,
+          name + ", one process: a plain triangulation that owns every cell");
+    check(direct.shared == (Utilities::MPI::n_mpi_processes(world) > 1) &&
+            direct.owners_agree,
+          name + ", direct: a shared triangulation whose owners are "
+                 "OwnedCells' ranges");
+    check(direct.cell_dofs == reference.cell_dofs,
+          name + ", direct: every cell's dofs numbered as on one process");
     out << name << ", direct solver on every process: the one-process run "
         << "to the bit" << std::endl;
 

@@ -8,6 +8,7 @@
 
 #include <ndda/mesh/crackable_mesh.h>
 #include <ndda/mesh/topology.h>
+#include <ndda/parallel/shared_mesh.h>
 
 #include <algorithm>
 #include <atomic>
@@ -298,6 +299,12 @@ namespace ndda
 
 
 
+  CrackableMesh::CrackableMesh(const MPI_Comm communicator)
+    : triangulation(make_scene_triangulation(communicator))
+  {}
+
+
+
   void
   CrackableMesh::build(const geometry::BlockMesh &mesh)
   {
@@ -320,12 +327,12 @@ namespace ndda
       }
     // The same Triangulation object, refilled: a DoFHandler built on it
     // stays attached (and is cleared by deal.II's clear signal).
-    triangulation.clear();
-    triangulation.create_triangulation(mesh.vertices, cells, SubCellData());
+    triangulation->clear();
+    triangulation->create_triangulation(mesh.vertices, cells, SubCellData());
 
     // deal.II keeps the order of cells and of their vertices; verify it,
     // since everything that follows relies on it.
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : triangulation->active_cell_iterators())
       for (unsigned int v = 0; v < 3; ++v)
         AssertThrow(cell->vertex_index(v) ==
                       mesh.triangles[cell->active_cell_index()][v],
@@ -555,14 +562,14 @@ namespace ndda
   void
   CrackableMesh::move_vertices(const std::vector<Tensor<1, 2>> &displacement)
   {
-    AssertDimension(displacement.size(), triangulation.n_vertices());
+    AssertDimension(displacement.size(), triangulation->n_vertices());
     // deal.II has no mutable access to its vertex array but through cell
     // accessors (step-18), which cost more than the whole stress update of
     // a P1 step. get_vertices() returns a reference to the triangulation's
     // own vertex vector; writing through it changes nothing else (no
     // cached geometry is kept by Triangulation<2> with a linear mapping).
     auto &vertices =
-      const_cast<std::vector<Point<2>> &>(triangulation.get_vertices());
+      const_cast<std::vector<Point<2>> &>(triangulation->get_vertices());
     for (unsigned int i = 0; i < vertices.size(); ++i)
       {
         vertices[i] += displacement[i];
@@ -575,10 +582,10 @@ namespace ndda
   void
   CrackableMesh::set_vertices(const std::vector<Point<2>> &positions)
   {
-    AssertDimension(positions.size(), triangulation.n_vertices());
+    AssertDimension(positions.size(), triangulation->n_vertices());
     // As move_vertices() does, through the triangulation's own vector.
     auto &vertices =
-      const_cast<std::vector<Point<2>> &>(triangulation.get_vertices());
+      const_cast<std::vector<Point<2>> &>(triangulation->get_vertices());
     vertices            = positions;
     block_mesh.vertices = positions;
   }
@@ -612,7 +619,7 @@ namespace ndda
     AssertDimension(moved.size(), position.size());
     AssertDimension(moved.size(), initial_position.size());
     auto &vertices =
-      const_cast<std::vector<Point<2>> &>(triangulation.get_vertices());
+      const_cast<std::vector<Point<2>> &>(triangulation->get_vertices());
     for (unsigned int i = 0; i < moved.size(); ++i)
       {
         AssertIndexRange(moved[i], vertices.size());

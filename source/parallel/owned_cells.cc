@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <ndda/parallel/owned_cells.h>
+#include <ndda/parallel/shared_mesh.h>
 
 #include <algorithm>
 #include <climits>
@@ -55,10 +56,52 @@ namespace ndda
   void
   OwnedCells::reinit(const unsigned int n_cells)
   {
-    // Process p owns cells [p n / P, (p + 1) n / P).
-    const std::size_t n_processes = first_cell.size() - 1;
-    for (std::size_t p = 0; p <= n_processes; ++p)
-      first_cell[p] = (std::size_t(n_cells) * p) / n_processes;
+    const unsigned int n_processes = first_cell.size() - 1;
+    for (unsigned int p = 0; p <= n_processes; ++p)
+      first_cell[p] = first_cell_of(p, n_cells, n_processes);
+  }
+
+
+
+  void
+  OwnedCells::reinit(const Triangulation<2> &triangulation)
+  {
+    const unsigned int n_cells     = triangulation.n_active_cells();
+    const unsigned int n_processes = first_cell.size() - 1;
+    if (!is_shared(triangulation))
+      {
+        reinit(n_cells);
+        return;
+      }
+    AssertThrow(Utilities::MPI::n_mpi_processes(
+                  triangulation.get_communicator()) == n_processes,
+                ExcMessage("OwnedCells: the triangulation is shared among " +
+                           std::to_string(Utilities::MPI::n_mpi_processes(
+                             triangulation.get_communicator())) +
+                           " processes, the cells are to be split among " +
+                           std::to_string(n_processes) + "."));
+    // The owners' ranges, in process order; an owner that comes back
+    // after another's cells has no range.
+    first_cell.assign(n_processes + 1, 0);
+    unsigned int owner = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const auto c = cell->active_cell_index();
+        const auto s = cell->subdomain_id();
+        AssertThrow(s >= owner && s < n_processes,
+                    ExcMessage("OwnedCells: the owners of the cells do not "
+                               "hold contiguous ranges in process order "
+                               "(cell " +
+                               std::to_string(c) + " belongs to process " +
+                               std::to_string(s) +
+                               ", after cells of "
+                               "process " +
+                               std::to_string(owner) + ")."));
+        for (; owner < s; ++owner)
+          first_cell[owner + 1] = c;
+      }
+    for (; owner < n_processes; ++owner)
+      first_cell[owner + 1] = n_cells;
   }
 
 

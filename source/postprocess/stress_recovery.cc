@@ -12,6 +12,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
+#include <ndda/parallel/shared_mesh.h>
 #include <ndda/postprocess/stress_recovery.h>
 #include <ndda/simulator.h>
 
@@ -295,13 +296,14 @@ namespace ndda
       const auto &fe = dofs.get_fe().base_element(0);
       dof_handler.reinit(dofs.get_triangulation());
       dof_handler.distribute_dofs(fe);
+      number_dofs_as_on_one_process(dof_handler);
       const unsigned int n = dof_handler.n_dofs();
       AssertThrow(stresses.size() == dofs.get_triangulation().n_active_cells(),
                   ExcMessage("StressRecovery: the stresses are not those of "
                              "the mesh's cells."));
 
       DynamicSparsityPattern pattern(n, n);
-      DoFTools::make_sparsity_pattern(dof_handler, pattern);
+      make_whole_sparsity_pattern(dof_handler, pattern);
       SparsityPattern sparsity;
       sparsity.copy_from(pattern);
       SparseMatrix<double> mass(sparsity);

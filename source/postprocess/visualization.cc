@@ -5,6 +5,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <ndda/base/atomic_file.h>
+#include <ndda/parallel/shared_mesh.h>
 #include <ndda/postprocess/visualization.h>
 #include <ndda/simulator.h>
 
@@ -17,44 +18,6 @@ namespace ndda
   namespace postprocess
   {
     using namespace dealii;
-
-    namespace
-    {
-      /**
-       * Let @p data_out build the patches of piece @p piece of @p n_pieces
-       * only: the active cells whose index c has c * n_pieces / n_cells ==
-       * piece, contiguous ranges of about the same size.
-       */
-      void
-      select_cells(DataOut<2>        &data_out,
-                   const unsigned int piece,
-                   const unsigned int n_pieces)
-      {
-        using cell_iterator = DataOut<2>::cell_iterator;
-        const auto mine     = [piece, n_pieces](const Triangulation<2> &tria,
-                                            const cell_iterator    &cell) {
-          return static_cast<std::uint64_t>(cell->active_cell_index()) *
-                   n_pieces / tria.n_active_cells() ==
-                 piece;
-        };
-        const auto next_mine = [mine](const Triangulation<2> &tria,
-                                      cell_iterator           cell) {
-          while (cell != tria.end() && !mine(tria, cell))
-            cell = static_cast<cell_iterator>(
-              std::next(Triangulation<2>::active_cell_iterator(cell)));
-          return cell;
-        };
-        data_out.set_cell_selection(
-          [next_mine](const Triangulation<2> &tria) {
-            return next_mine(tria, cell_iterator(tria.begin_active()));
-          },
-          [next_mine](const Triangulation<2> &tria, const cell_iterator &cell) {
-            return next_mine(tria,
-                             cell_iterator(std::next(
-                               Triangulation<2>::active_cell_iterator(cell))));
-          });
-      }
-    } // namespace
 
     void
     VisualizationWriter::write_frame(
@@ -69,9 +32,10 @@ namespace ndda
       DataOut<2> data_out;
       Frame frame(data_out, output_number, output.write_vtu, output.directory);
       data_out.attach_dof_handler(simulator.get_dof_handler());
-      // On several processes each writes the patches of its share of the
-      // cells (a range of active cell indices), and the first process
-      // the records that name the pieces.
+      // On several processes each writes the patches of the cells it owns
+      // (a range of active cell indices of the shared triangulation,
+      // parallel/shared_mesh.h: DataOut visits the locally owned cells),
+      // and the first process the records that name the pieces.
       const MPI_Comm     communicator = simulator.get_communicator();
       const unsigned int n_pieces =
         Utilities::MPI::job_supports_mpi() ?
@@ -79,8 +43,9 @@ namespace ndda
           1;
       const unsigned int piece =
         n_pieces > 1 ? Utilities::MPI::this_mpi_process(communicator) : 0;
-      if (n_pieces > 1)
-        select_cells(data_out, piece, n_pieces);
+      AssertThrow(n_pieces == 1 ||
+                    is_shared(simulator.get_dof_handler().get_triangulation()),
+                  ExcInternalError());
       for (const auto &postprocessor : postprocessors)
         postprocessor->add_fields(simulator, frame);
       data_out.build_patches(simulator.get_mapping(),

@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <ndda/parallel/shared_mesh.h>
 #include <ndda/physics/blas.h>
 #include <ndda/physics/finite_element.h>
 #include <ndda/scene/discretization.h>
@@ -46,12 +47,13 @@ namespace ndda
                                     element.mass_quadrature);
       n_output_subdivisions = element.n_output_subdivisions;
       dof_handler.distribute_dofs(*fe);
+      number_dofs_as_on_one_process(dof_handler);
       cell_material.resize(mesh.get_triangulation().n_active_cells());
       for (const auto &cell : mesh.get_triangulation().active_cell_iterators())
         cell_material[cell->active_cell_index()] = cell->material_id();
       dof_map.reinit(dof_handler);
       owned_cells.set_communicator(communicator);
-      owned_cells.reinit(dof_map.n_cells());
+      owned_cells.reinit(mesh.get_triangulation());
       element_cache.set_owned_cells(&owned_cells);
       // A crack keeps the cells (and their frames).
       if (frames.cell_angles().size() != dof_map.n_cells())
@@ -203,10 +205,9 @@ namespace ndda
       constraints.tie_blocks(reduced_blocks);
 
       DynamicSparsityPattern dsp(dof_handler.n_dofs());
-      DoFTools::make_sparsity_pattern(dof_handler,
-                                      dsp,
-                                      constraints.affine_constraints(),
-                                      true);
+      make_whole_sparsity_pattern(dof_handler,
+                                  dsp,
+                                  constraints.affine_constraints());
       bolts.add_couplings(dsp);
       // Rigid and affine blocks constrain most of their dofs: the solver
       // gets the system of the free dofs alone (direct solvers).

@@ -2,6 +2,7 @@
 #ifndef ndda_mesh_crackable_mesh_h
 #define ndda_mesh_crackable_mesh_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -13,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -141,6 +143,15 @@ namespace ndda
   {
   public:
     /**
+     * A mesh for a scene run on the processes of @p communicator: on one
+     * process its triangulation is a plain Triangulation, on several a
+     * parallel::shared::Triangulation whose cells each process owns a
+     * range of (make_scene_triangulation()). Every process holds the
+     * whole mesh and must build and crack it alike.
+     */
+    explicit CrackableMesh(const MPI_Comm communicator = MPI_COMM_SELF);
+
+    /**
      * Build the triangulation from plain arrays (the output of the mesher
      * or of an import).
      */
@@ -169,7 +180,7 @@ namespace ndda
     const Triangulation<2> &
     get_triangulation() const
     {
-      return triangulation;
+      return *triangulation;
     }
 
     /** Block index of the active cell with the given index. */
@@ -396,10 +407,11 @@ namespace ndda
     void
     install(geometry::BlockMesh &&mesh);
 
-    Triangulation<2>          triangulation;
-    geometry::BlockMesh       block_mesh;
-    std::vector<unsigned int> cell_block;
-    std::vector<std::string>  block_names;
+    /// The same object for the mesh's life (a DoFHandler stays attached).
+    std::unique_ptr<Triangulation<2>> triangulation;
+    geometry::BlockMesh               block_mesh;
+    std::vector<unsigned int>         cell_block;
+    std::vector<std::string>          block_names;
     /// Keys (smaller vertex << 32 | larger vertex) of the edges in
     /// block_mesh.crack_edges, sorted.
     std::vector<std::uint64_t> crack_keys;

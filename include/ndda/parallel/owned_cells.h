@@ -5,6 +5,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/grid/tria.h>
+
 #include <cstddef>
 #include <string>
 #include <type_traits>
@@ -41,9 +43,30 @@ namespace ndda
     void
     set_communicator(const MPI_Comm communicator);
 
-    /** Split @p n_cells cells into ranges as equal as they can be. */
+    /** Split @p n_cells cells into ranges as equal as they can be:
+     * process p owns the cells [first_cell_of(p), first_cell_of(p + 1)). */
     void
     reinit(const unsigned int n_cells);
+
+    /**
+     * Split the active cells of @p triangulation among the processes: as
+     * its owners say if it is a parallel::shared::Triangulation on the
+     * processes of the communicator (make_scene_triangulation() gives each
+     * the range of reinit()), else as reinit(n_active_cells). Throws if
+     * the owners do not hold contiguous ranges in process order.
+     */
+    void
+    reinit(const Triangulation<2> &triangulation);
+
+    /** The first of @p n_cells cells that process @p p of @p n_processes
+     * owns: p n / P, rounded down. */
+    static unsigned int
+    first_cell_of(const unsigned int p,
+                  const unsigned int n_cells,
+                  const unsigned int n_processes)
+    {
+      return (std::size_t(n_cells) * p) / n_processes;
+    }
 
     /** The number of cells split. */
     unsigned int
