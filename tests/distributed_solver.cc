@@ -13,7 +13,8 @@
 //     same whole solution, bit for bit;
 //  3. new values on the same pattern keep the split of the rows and are
 //     solved as well, and a new pattern (one more coupling) is split and
-//     factorized anew;
+//     factorized anew; rows owned as the caller says
+//     (set_row_owners()) are split so and solved as well;
 //  4. MUMPS's general LU solves a non-symmetric matrix (the elasticity
 //     matrix plus a skew-symmetric part, as friction makes it) as UMFPACK
 //     does, to 1e-12;
@@ -316,6 +317,40 @@ main(int argc, char **argv)
       "the spring changes the solution");
   }
   out << "a new pattern: split and factorized anew, solved to 1e-12"
+      << std::endl;
+
+  // 3c. Rows owned as the caller says (set_row_owners(), as a scene's
+  // dofs are owned in its shared triangulation): the last process owns
+  // the first rows, so that the split cannot be METIS's by chance; an
+  // empty list gives the split back to METIS.
+  {
+    std::vector<unsigned int> owners(n);
+    for (unsigned int i = 0; i < n; ++i)
+      owners[i] = n_processes - 1 - std::size_t(i) * n_processes / n;
+    mumps.set_row_owners(owners);
+    mumps.factorize(system.matrix, true);
+    const unsigned int this_process = Utilities::MPI::this_mpi_process(comm);
+    IndexSet           given(n);
+    for (unsigned int i = 0; i < n; ++i)
+      if (owners[i] == this_process)
+        given.add_index(i);
+    check(mumps.locally_owned_rows() == given, "the rows owned as given");
+    Vector<double> x(n);
+    mumps.solve(x, system.gravity);
+    check(
+      relative_difference(x,
+                          serial_solution(parameters::LinearSolverType::direct,
+                                          system.matrix,
+                                          system.gravity)) <= 1e-12,
+      "MUMPS agrees with CHOLMOD on the rows owned as given");
+    check(ndda_tests::same_on_every_process(x, comm),
+          "every process has the same solution (rows owned as given)");
+    mumps.set_row_owners({});
+    mumps.factorize(system.matrix, true);
+    check(mumps.locally_owned_rows() == owned, "METIS's split again");
+  }
+  out << "rows owned as the caller says: solved to 1e-12; without owners, "
+         "METIS's split"
       << std::endl;
 
   // 4. A non-symmetric matrix: MUMPS's LU against UMFPACK.

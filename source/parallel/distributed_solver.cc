@@ -150,6 +150,25 @@ namespace ndda
 
 
 
+  void
+  DistributedSolver::set_row_owners(const std::vector<unsigned int> &owners)
+  {
+    const unsigned int n_parts =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    for (const auto p : owners)
+      AssertThrow(p < n_parts,
+                  ExcMessage("DistributedSolver: a row owned by process " +
+                             std::to_string(p) + " of " +
+                             std::to_string(n_parts) + "."));
+    if (owners != row_owners)
+      {
+        row_owners                 = owners;
+        implementation->split_made = false;
+      }
+  }
+
+
+
   const IndexSet &
   DistributedSolver::locally_owned_rows() const
   {
@@ -193,11 +212,11 @@ namespace ndda
       dealii::Utilities::MPI::this_mpi_process(communicator);
     const SparsityPattern &pattern = matrix.get_sparsity_pattern();
 
-    // A new pattern: a new split of the rows (METIS on the first process,
-    // the same for all), and the distributed matrix's pattern from the
-    // rows of this process. (deal.II 9.4's
-    // TrilinosWrappers::SparseMatrix::reinit() from a SparseMatrix and two
-    // index sets loses entries on more than one process:
+    // A new pattern (or new owners): a new split of the rows (the owners
+    // given, else METIS on the first process, the same for all), and the
+    // distributed matrix's pattern from the rows of this process.
+    // (deal.II 9.4's TrilinosWrappers::SparseMatrix::reinit() from a
+    // SparseMatrix and two index sets loses entries on more than one process:
     // ../shared/DESIGN.md.)
     const std::uint64_t print = fingerprint(pattern);
     const bool          same_pattern =
@@ -209,7 +228,9 @@ namespace ndda
         impl.mumps.reset();
         impl.problem.reset();
         std::vector<unsigned int> part(matrix.m(), 0);
-        if (n_parts > 1)
+        if (row_owners.size() == matrix.m())
+          part = row_owners;
+        else if (n_parts > 1)
           {
             if (this_part == 0)
               SparsityTools::partition(pattern,

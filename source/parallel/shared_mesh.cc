@@ -4,6 +4,7 @@
 #include <ndda/parallel/owned_cells.h>
 #include <ndda/parallel/shared_mesh.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,30 @@ namespace ndda
                            std::to_string(next) + " of the " +
                            std::to_string(n_dofs) + " dofs."));
     dof_handler.renumber_dofs(new_numbers);
+  }
+
+
+
+  std::vector<unsigned int>
+  dof_owners(const DoFHandler<2> &dof_handler)
+  {
+    std::vector<unsigned int> owner(dof_handler.n_dofs(), 0);
+    if (!is_shared(dof_handler.get_triangulation()))
+      return owner;
+    const std::vector<IndexSet> owned = Utilities::MPI::all_gather(
+      dof_handler.get_triangulation().get_communicator(),
+      dof_handler.locally_owned_dofs());
+    std::vector<bool> seen(owner.size(), false);
+    for (unsigned int p = 0; p < owned.size(); ++p)
+      for (const auto i : owned[p])
+        {
+          AssertThrow(!seen[i], ExcInternalError());
+          seen[i]  = true;
+          owner[i] = p;
+        }
+    AssertThrow(std::find(seen.begin(), seen.end(), false) == seen.end(),
+                ExcInternalError());
+    return owner;
   }
 
 

@@ -431,6 +431,19 @@ namespace ndda
 
 
   void
+  LinearSolver::set_row_owners(const std::vector<unsigned int> &owners)
+  {
+    // CG-AMG works on the split itself (its products, ML's aggregates);
+    // MUMPS moves the rows to its own mapping, and METIS's split of the
+    // matrix's graph gave it the faster transfer (doc/performance.md,
+    // "MPI, third stage: deal.II's shared triangulation").
+    if (distributed != nullptr && type == parameters::LinearSolverType::cg_amg)
+      distributed->set_row_owners(owners);
+  }
+
+
+
+  void
   LinearSolver::forget_factorization()
   {
     implementation = std::make_unique<Implementation>();

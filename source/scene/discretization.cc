@@ -217,6 +217,19 @@ namespace ndda
                            !reduced_blocks.empty() &&
                              parameters.control.linear_solver !=
                                parameters::LinearSolverType::cg_amg);
+      // The solvers that split the rows among the processes give each
+      // process the rows of the dofs it owns in the shared triangulation.
+      if (is_shared(mesh.get_triangulation()))
+        {
+          const std::vector<unsigned int> owner = dof_owners(dof_handler);
+          std::vector<unsigned int>       row_owner;
+          if (linear_system.is_compact())
+            for (const auto i : linear_system.get_free_dofs())
+              row_owner.push_back(owner[i]);
+          else
+            row_owner = owner;
+          linear_system.get_linear_solver().set_row_owners(row_owner);
+        }
     }
 
 

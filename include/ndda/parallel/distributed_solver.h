@@ -29,13 +29,14 @@ namespace ndda
    * through Trilinos' Amesos) or CG preconditioned by smoothed-aggregation
    * AMG (Trilinos' ML, with the rigid-body modes as its near null space).
    *
-   * The first stage of ndda on several processes: the matrix comes in
-   * whole, the same on every process (ndda's serial assembly, replicated),
-   * and the solution goes out whole on every process; the rows are split
-   * among the processes by METIS on the graph of the matrix (deal.II's
-   * SparsityTools::partition(), computed on the first process and sent to
-   * the others, so that every process has the same split). With one
-   * process it is the same code on one part.
+   * The matrix comes in whole, the same on every process (ndda's serial
+   * assembly, replicated), and the solution goes out whole on every
+   * process. Each row belongs to the process that the caller says owns it
+   * (set_row_owners(): in a scene, the owner of its dof in the shared
+   * triangulation); without owners the rows are split by METIS on the
+   * graph of the matrix (deal.II's SparsityTools::partition(), computed
+   * on the first process and sent to the others, so that every process
+   * has the same split). With one process it is the same code on one part.
    *
    * MUMPS's solution agrees with a serial direct solver to round-off
    * (tests/distributed_solver.cc), and CG-AMG's to its tolerance. With one
@@ -78,6 +79,15 @@ namespace ndda
     void
     set_rigid_body_modes(const std::vector<Point<2>>     &location,
                          const std::vector<unsigned int> &component);
+
+    /**
+     * The process that owns each row of the matrices to come, the same on
+     * every process; an empty list, or one whose size is not the
+     * matrix's, leaves the split to METIS. A new list makes the next
+     * factorize() split the rows anew.
+     */
+    void
+    set_row_owners(const std::vector<unsigned int> &owners);
 
     /**
      * Split the rows of @p matrix (the same on every process) among the
@@ -124,10 +134,12 @@ namespace ndda
   private:
     struct Implementation;
 
-    const MPI_Comm                  communicator;
-    const Method                    method;
-    const double                    tolerance;
-    std::vector<double>             rigid_body_modes;
+    const MPI_Comm      communicator;
+    const Method        method;
+    const double        tolerance;
+    std::vector<double> rigid_body_modes;
+    /// See set_row_owners().
+    std::vector<unsigned int>       row_owners;
     std::unique_ptr<Implementation> implementation;
   };
 } // namespace ndda

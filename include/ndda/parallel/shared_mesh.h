@@ -12,6 +12,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <memory>
+#include <vector>
 
 namespace ndda
 {
@@ -65,6 +66,14 @@ namespace ndda
    */
   void
   number_dofs_as_on_one_process(DoFHandler<2> &dof_handler);
+
+  /**
+   * The process that owns each dof of @p dof_handler
+   * (DoFHandler::locally_owned_dofs() of every process); all 0 unless the
+   * triangulation is_shared(). Collective.
+   */
+  std::vector<unsigned int>
+  dof_owners(const DoFHandler<2> &dof_handler);
 
   /**
    * Add the couplings of every active cell's dofs to @p pattern (through

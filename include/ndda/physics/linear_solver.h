@@ -56,6 +56,15 @@ namespace ndda
     set_rigid_body_modes(const std::vector<Point<2>>     &location,
                          const std::vector<unsigned int> &component);
 
+    /**
+     * The process that owns each row of the matrices to come, for CG-AMG
+     * on several processes (DistributedSolver::set_row_owners()). MUMPS
+     * keeps METIS's split of the rows, which measured faster for it; the
+     * serial solvers have no split.
+     */
+    void
+    set_row_owners(const std::vector<unsigned int> &owners);
+
     /** Prepare for solves with @p matrix (kept by reference for CG-Jacobi,
      * copied for CG-AMG). */
     void
