@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>

@@ -9,7 +9,6 @@
 #include <ndda/postprocess/visualization.h>
 #include <ndda/simulator.h>
 
-#include <cstdint>
 #include <cstdio>
 #include <fstream>
 
