@@ -202,6 +202,7 @@ namespace ndda
                                                   fem.dof_map,
                                                   scene_half_height,
                                                   contacts);
+        contacts.set_owned_cells(&fem.owned_cells);
         contacts.set_frames(&fem.frames);
         contacts.set_reduced_blocks(fem.reduced_mesh_blocks());
       }

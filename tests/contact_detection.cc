@@ -22,6 +22,7 @@
 #include <tuple>
 #include <vector>
 
+#include "grids.h"
 #include "tests.h"
 
 using namespace ndda;
@@ -29,6 +30,7 @@ using contact::Candidate;
 using contact::CandidateType;
 using dealii::Point;
 using ndda_tests::check;
+using ndda_tests::same_candidates;
 
 namespace
 {
@@ -389,45 +391,10 @@ namespace
   geometry::BlockMesh
   random_scene()
   {
-    std::mt19937                           random(42);
-    std::uniform_real_distribution<double> unit(0., 1.);
-    geometry::BlockMesh                    mesh;
-    for (unsigned int b = 0; b < 200; ++b)
-      {
-        const Point<2>     center(unit(random), unit(random));
-        const double       size    = 0.02 + 0.03 * unit(random);
-        const double       angle   = 2. * M_PI * unit(random);
-        const unsigned int n       = mesh.vertices.size();
-        const unsigned int corners = (b % 2 == 0 ? 3 : 4);
-        for (unsigned int k = 0; k < corners; ++k)
-          {
-            const double phi = angle + 2. * M_PI * k / corners;
-            mesh.vertices.emplace_back(center[0] + size * std::cos(phi),
-                                       center[1] + size * std::sin(phi));
-          }
-        mesh.triangles.push_back({{n, n + 1, n + 2}});
-        if (corners == 4)
-          mesh.triangles.push_back({{n, n + 2, n + 3}});
-        mesh.cell_block.insert(mesh.cell_block.end(), corners - 2, b);
-        mesh.cell_material.insert(mesh.cell_material.end(), corners - 2, 0);
-        mesh.block_names.push_back("b" + std::to_string(b));
-      }
-    return mesh;
+    std::mt19937 random(42);
+    return ndda_tests::random_blocks(200, 1., random);
   }
 
-
-  /** True if @p a and @p b are the same candidates, field by field. */
-  bool
-  same_candidates(const std::vector<Candidate> &a,
-                  const std::vector<Candidate> &b)
-  {
-    bool same = (a.size() == b.size());
-    for (unsigned int k = 0; same && k < a.size(); ++k)
-      same = a[k].vertex == b[k].vertex && a[k].edge == b[k].edge &&
-             a[k].type == b[k].type && a[k].distance == b[k].distance &&
-             a[k].edge_ratio == b[k].edge_ratio;
-    return same;
-  }
 
 
   void
@@ -476,30 +443,7 @@ namespace
         const double threshold = 0.01 + 0.01 * (step % 3);
         const double scale     = (step % 50 == 49 ? 0.05 : 0.001);
         n_jumps += (step % 50 == 49);
-        for (unsigned int b = 0; b < mesh.block_names.size(); ++b)
-          {
-            const dealii::Tensor<1, 2> shift(
-              {scale * unit(random), scale * unit(random)});
-            const double              angle = 10. * scale * unit(random);
-            std::vector<unsigned int> nodes;
-            for (unsigned int c = 0; c < mesh.triangles.size(); ++c)
-              if (mesh.cell_block[c] == b)
-                nodes.insert(nodes.end(),
-                             mesh.triangles[c].begin(),
-                             mesh.triangles[c].end());
-            std::sort(nodes.begin(), nodes.end());
-            nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-            const Point<2> center = mesh.vertices[nodes[0]];
-            for (const unsigned int v : nodes)
-              {
-                const dealii::Tensor<1, 2> r = mesh.vertices[v] - center;
-                mesh.vertices[v] =
-                  center + shift +
-                  dealii::Tensor<1, 2>(
-                    {std::cos(angle) * r[0] - std::sin(angle) * r[1],
-                     std::sin(angle) * r[0] + std::cos(angle) * r[1]});
-              }
-          }
+        ndda_tests::move_blocks(mesh, random, scale);
         const auto cached = list.detect(mesh.vertices, edges, threshold);
         const auto fresh  = contact::detect(mesh.vertices, edges, threshold);
         n_same += same_candidates(cached, fresh);

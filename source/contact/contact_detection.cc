@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -39,6 +40,31 @@ namespace ndda
         return BoundingBox<2>(
           std::make_pair(Point<2>(std::min(a[0], b[0]), std::min(a[1], b[1])),
                          Point<2>(std::max(a[0], b[0]), std::max(a[1], b[1]))));
+      }
+
+
+      /** Whether two boxes overlap or touch (as boost's intersects()). */
+      bool
+      touch(const BoundingBox<2> &a, const BoundingBox<2> &b)
+      {
+        for (unsigned int d = 0; d < 2; ++d)
+          if (a.upper_bound(d) < b.lower_bound(d) ||
+              a.lower_bound(d) > b.upper_bound(d))
+            return false;
+        return true;
+      }
+
+
+      /** An edge's box grown by @p reach, as for_each_edge_pair() grows
+       * it. */
+      BoundingBox<2>
+      grown_box(const std::vector<Point<2>> &vertices,
+                const BoundaryEdge          &e,
+                const double                 reach)
+      {
+        BoundingBox<2> box = edge_box(vertices, e);
+        box.extend(reach);
+        return box;
       }
 
 
@@ -225,30 +251,134 @@ namespace ndda
 
 
     void
+    NeighbourList::set_owned_vertices(std::vector<bool> owned_in)
+    {
+      owned = std::move(owned_in);
+      clear();
+    }
+
+
+
+    std::vector<unsigned int>
+    NeighbourList::add_owned_tests(const std::vector<Point<2>>     &vertices,
+                                   const std::vector<BoundaryEdge> &edges,
+                                   const double                     reach)
+    {
+      namespace bgi = boost::geometry::index;
+      using Leaf    = std::pair<BoundingBox<2>, unsigned int>;
+      AssertThrow(owned.size() == vertices.size(),
+                  dealii::ExcMessage(
+                    "NeighbourList: the owned vertices were set for " +
+                    std::to_string(owned.size()) + " vertices, detect() got " +
+                    std::to_string(vertices.size()) + "."));
+
+      // The own edges and the box around them.
+      std::vector<unsigned int> own_edges;
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        if (owned[edges[e].v0] || owned[edges[e].v1])
+          own_edges.push_back(e);
+      std::vector<unsigned int> local;
+      if (own_edges.empty())
+        return local;
+      BoundingBox<2> region = edge_box(vertices, edges[own_edges[0]]);
+      for (const unsigned int e : own_edges)
+        region.merge_with(edge_box(vertices, edges[e]));
+      // The pairs are those of for_each_edge_pair(): (i, j), i < j, with
+      // i's box touching j's grown box. An own edge i queries with its
+      // box grown by a rounding margin, so that it finds the pairs in
+      // which it is the larger index too (the relation is symmetric but
+      // for the rounding of the growth); each pair found is then tested
+      // as for_each_edge_pair() tests it.
+      const double margin =
+        1e-10 * (reach + std::max({std::abs(region.lower_bound(0)),
+                                   std::abs(region.lower_bound(1)),
+                                   std::abs(region.upper_bound(0)),
+                                   std::abs(region.upper_bound(1))}));
+      region.extend(margin);
+
+      // The ghost edges: every edge whose grown box reaches the region.
+      std::vector<Leaf> grown;
+      for (unsigned int e = 0; e < edges.size(); ++e)
+        {
+          const BoundingBox<2> box = grown_box(vertices, edges[e], reach);
+          if (touch(box, region))
+            {
+              local.push_back(e);
+              grown.emplace_back(box, e);
+            }
+        }
+      const auto tree = dealii::pack_rtree(grown);
+
+      std::vector<Leaf> hits;
+      for (const unsigned int i : own_edges)
+        {
+          const BoundingBox<2> own_i = edge_box(vertices, edges[i]);
+          BoundingBox<2>       query = own_i;
+          query.extend(margin);
+          hits.clear();
+          tree.query(bgi::intersects(query), std::back_inserter(hits));
+          for (const Leaf &hit : hits)
+            {
+              const unsigned int j = hit.second;
+              if (j == i || share_vertex(edges[i], edges[j]))
+                continue;
+              const bool pair =
+                (i < j ? touch(own_i, hit.first) :
+                         touch(edge_box(vertices, edges[j]),
+                               grown_box(vertices, edges[i], reach)));
+              if (pair)
+                for (const unsigned int v : {edges[i].v0, edges[i].v1})
+                  if (owned[v])
+                    tests.emplace_back(v, j);
+            }
+        }
+      return local;
+    }
+
+
+
+    void
     NeighbourList::build(const std::vector<Point<2>>     &vertices,
                          const std::vector<BoundaryEdge> &edges,
                          const double                     reach_in)
     {
       reach = reach_in;
       tests.clear();
-      for_each_edge_pair(vertices,
-                         edges,
-                         reach,
-                         [&](const unsigned int i, const unsigned int j) {
-                           tests.emplace_back(edges[j].v0, i);
-                           tests.emplace_back(edges[j].v1, i);
-                           tests.emplace_back(edges[i].v0, j);
-                           tests.emplace_back(edges[i].v1, j);
-                         });
+      boundary_vertices.clear();
+      if (owned.empty())
+        {
+          for_each_edge_pair(vertices,
+                             edges,
+                             reach,
+                             [&](const unsigned int i, const unsigned int j) {
+                               tests.emplace_back(edges[j].v0, i);
+                               tests.emplace_back(edges[j].v1, i);
+                               tests.emplace_back(edges[i].v0, j);
+                               tests.emplace_back(edges[i].v1, j);
+                             });
+          for (const BoundaryEdge &e : edges)
+            {
+              boundary_vertices.push_back(e.v0);
+              boundary_vertices.push_back(e.v1);
+            }
+          local_edges = edges.size();
+        }
+      else
+        {
+          // The list stays complete while the own and the ghost edges move
+          // less than the skin allows: a pair it needs was within reach at
+          // the build, so its other edge was a ghost then.
+          const std::vector<unsigned int> local =
+            add_owned_tests(vertices, edges, reach);
+          for (const unsigned int e : local)
+            {
+              boundary_vertices.push_back(edges[e].v0);
+              boundary_vertices.push_back(edges[e].v1);
+            }
+          local_edges = local.size();
+        }
       std::sort(tests.begin(), tests.end());
       tests.erase(std::unique(tests.begin(), tests.end()), tests.end());
-
-      boundary_vertices.clear();
-      for (const BoundaryEdge &e : edges)
-        {
-          boundary_vertices.push_back(e.v0);
-          boundary_vertices.push_back(e.v1);
-        }
       std::sort(boundary_vertices.begin(), boundary_vertices.end());
       boundary_vertices.erase(std::unique(boundary_vertices.begin(),
                                           boundary_vertices.end()),

@@ -12,6 +12,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ndda/contact/contact_handler.h>
+#include <ndda/parallel/owned_cells.h>
 #include <ndda/physics/block_rotation.h>
 
 #include <algorithm>
@@ -61,6 +62,37 @@ namespace ndda
           depth = std::max(depth, x);
         return depth;
       }
+
+
+      /**
+       * The candidates of the whole scene within @p threshold: on several
+       * processes (@p owned_cells), this process's from its neighbour
+       * list, joined with the others'.
+       */
+      std::vector<Candidate>
+      detect_candidates(NeighbourList                   &neighbours,
+                        const OwnedCells                *owned_cells,
+                        const std::vector<Point<2>>     &vertices,
+                        const std::vector<BoundaryEdge> &edges,
+                        const double                     threshold,
+                        const double                     min_skin)
+      {
+        std::vector<Candidate> candidates =
+          neighbours.detect(vertices, edges, threshold, min_skin);
+        if (owned_cells == nullptr)
+          return candidates;
+        // Each process's list is sorted by vertex, then edge, and no pair is
+        // on two lists; joined and sorted, they are one process's list.
+        candidates                = owned_cells->gather(candidates);
+        const auto by_vertex_edge = [](const Candidate &a, const Candidate &b) {
+          return std::tie(a.vertex, a.edge) < std::tie(b.vertex, b.edge);
+        };
+        if (!std::is_sorted(candidates.begin(),
+                            candidates.end(),
+                            by_vertex_edge))
+          std::sort(candidates.begin(), candidates.end(), by_vertex_edge);
+        return candidates;
+      }
     } // namespace
 
 
@@ -77,7 +109,8 @@ namespace ndda
       dofs          = &dofs_in;
       settings      = settings_in;
       edge_shapes.initialize(*dofs->fe);
-      neighbours.clear();
+      owned_cells = nullptr;
+      neighbours.set_owned_vertices({});
       if (!settings.law)
         settings.law = create_contact_law(default_contact_law);
 
@@ -115,6 +148,25 @@ namespace ndda
 
 
     void
+    ContactHandler::set_owned_cells(const OwnedCells *cells)
+    {
+      // Each process finds the candidates of the vertices it owns against
+      // its own and its ghost edges (NeighbourList); detect_candidates()
+      // joins them, in the order of one process. nullptr, or cells not
+      // split: this process alone. initialize() goes back to that.
+      Assert(dofs != nullptr, dealii::ExcNotInitialized());
+      const bool split = cells != nullptr && cells->is_split();
+      owned_cells      = split ? cells : nullptr;
+      neighbours.set_owned_vertices(
+        split ? cells->owned_vertices(dofs->cell_vertices,
+                                      dofs->vertices_per_cell,
+                                      dofs->vertex_dofs.size()) :
+                std::vector<bool>());
+    }
+
+
+
+    void
     ContactHandler::set_normal_stiffness(const double k)
     {
       settings.normal_stiffness = k;
@@ -143,8 +195,8 @@ namespace ndda
       if (block_edge_length.empty())
         measure_block_edges(vertices); // on the first step's geometry
 
-      const std::vector<Candidate> candidates =
-        neighbours.detect(vertices, edges, threshold, min_skin);
+      const std::vector<Candidate> candidates = detect_candidates(
+        neighbours, owned_cells, vertices, edges, threshold, min_skin);
       statistics.n_candidates = candidates.size();
       index_by_vertex(
         vertices.size(),
@@ -194,8 +246,9 @@ namespace ndda
                                const double                 threshold,
                                const double                 min_skin)
     {
-      return neighbours.detect(vertices, edges, threshold, min_skin).size() >
-             statistics.n_candidates;
+      return detect_candidates(
+               neighbours, owned_cells, vertices, edges, threshold, min_skin)
+               .size() > statistics.n_candidates;
     }
 
 

@@ -16,8 +16,8 @@ namespace ndda
     mpi_count(const std::size_t end)
     {
       AssertThrow(end <= std::size_t(INT_MAX),
-                  ExcMessage("OwnedCells::share(): more than 2^31 values "
-                             "to share in one call (" +
+                  ExcMessage("OwnedCells: more than 2^31 values (or bytes) "
+                             "to send in one call (" +
                              std::to_string(end) + ")."));
       return end;
     }
@@ -102,6 +102,69 @@ namespace ndda
       }
     for (; owner < n_processes; ++owner)
       first_cell[owner + 1] = n_cells;
+  }
+
+
+
+  std::vector<bool>
+  OwnedCells::owned_vertices(const std::vector<unsigned int> &cell_vertices,
+                             const unsigned int               per_cell,
+                             const unsigned int               n_vertices) const
+  {
+    AssertThrow(per_cell > 0 &&
+                  cell_vertices.size() == std::size_t(n_cells()) * per_cell,
+                ExcMessage("OwnedCells::owned_vertices(): the cells are "
+                           "split as " +
+                           std::to_string(n_cells()) + " cells, " +
+                           std::to_string(cell_vertices.size()) +
+                           " vertex indices are given for " +
+                           std::to_string(per_cell) + " per cell."));
+    std::vector<bool> seen(n_vertices, false);
+    std::vector<bool> owned(n_vertices, false);
+    for (unsigned int c = 0; c < end(); ++c)
+      for (unsigned int k = 0; k < per_cell; ++k)
+        {
+          const unsigned int v = cell_vertices[std::size_t(c) * per_cell + k];
+          AssertIndexRange(v, n_vertices);
+          if (!seen[v])
+            {
+              seen[v]  = true;
+              owned[v] = c >= begin();
+            }
+        }
+    return owned;
+  }
+
+
+
+  std::vector<char>
+  OwnedCells::gather_bytes(const char *mine, const std::size_t n_bytes) const
+  {
+    const std::size_t n_processes = first_cell.size() - 1;
+    const int         count       = mpi_count(n_bytes);
+    std::vector<int>  counts(n_processes);
+    int               error = MPI_Allgather(
+      &count, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator);
+    AssertThrowMPI(error);
+    std::vector<int> offsets(n_processes);
+    std::size_t      total = 0;
+    for (std::size_t p = 0; p < n_processes; ++p)
+      {
+        offsets[p] = mpi_count(total);
+        total += counts[p];
+      }
+    mpi_count(total);
+    std::vector<char> all(total);
+    error = MPI_Allgatherv(mine,
+                           count,
+                           MPI_BYTE,
+                           all.data(),
+                           counts.data(),
+                           offsets.data(),
+                           MPI_BYTE,
+                           communicator);
+    AssertThrowMPI(error);
+    return all;
   }
 
 

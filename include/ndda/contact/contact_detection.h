@@ -144,6 +144,16 @@ namespace ndda
      *
      * The list belongs to one set of boundary edges and one numbering of
      * the vertices: clear() it when they change (a crack).
+     *
+     * On several processes (set_owned_vertices()) each process keeps only
+     * the tests of the vertices it owns: the broad phase runs over its own
+     * edges (those with an owned end vertex) and the ghost edges within
+     * reach of them (the edges of other processes' blocks whose boxes come
+     * within the reach of the box around its own edges), and the narrow
+     * phase tests its own vertices only. The tests of all processes
+     * together are exactly those of one process: a test (v, e) comes from
+     * a pair of edges within reach, one of which has v as an end point;
+     * its owner holds that edge as its own and e as own or ghost.
      */
     class NeighbourList
     {
@@ -157,6 +167,22 @@ namespace ndda
       /** Forget the list: the next detect() builds it. */
       void
       clear();
+
+      /**
+       * Keep only the tests of the vertices @p owned marks (by vertex
+       * index), the others being some other process's; empty: every
+       * vertex, as on one process. Forgets the list.
+       */
+      void
+      set_owned_vertices(std::vector<bool> owned);
+
+      /** The boundary edges the last build held: every edge on one
+       * process, the own and the ghost edges on several. */
+      std::size_t
+      n_local_edges() const
+      {
+        return local_edges;
+      }
 
       /**
        * The candidates of detect(vertices, edges, threshold). A build
@@ -198,6 +224,13 @@ namespace ndda
             const std::vector<BoundaryEdge> &edges,
             const double                     reach);
 
+      /** The tests of build() for the owned vertices only
+       * (set_owned_vertices()); returns the own and ghost edges. */
+      std::vector<unsigned int>
+      add_owned_tests(const std::vector<Point<2>>     &vertices,
+                      const std::vector<BoundaryEdge> &edges,
+                      const double                     reach);
+
       double skin_factor;
       /// (vertex, edge), sorted and unique.
       std::vector<std::pair<unsigned int, unsigned int>> tests;
@@ -205,9 +238,12 @@ namespace ndda
       std::vector<unsigned int> boundary_vertices;
       std::vector<Point<2>>     built_at;
       /// Threshold plus skin of the build; negative: no list.
-      double       reach   = -1;
-      std::size_t  n_edges = 0, n_vertices = 0;
-      unsigned int builds = 0;
+      double      reach   = -1;
+      std::size_t n_edges = 0, n_vertices = 0;
+      /// The vertices whose tests this list keeps; empty: all.
+      std::vector<bool> owned;
+      std::size_t       local_edges = 0;
+      unsigned int      builds      = 0;
     };
   } // namespace contact
 } // namespace ndda

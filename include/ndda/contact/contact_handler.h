@@ -20,11 +20,6 @@
 #include <ndda/mesh/boundary_edges.h>
 #include <ndda/physics/dof_map.h>
 
-namespace ndda
-{
-  class BlockFrames;
-}
-
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -36,6 +31,9 @@ namespace ndda
 
 namespace ndda
 {
+  class BlockFrames;
+  class OwnedCells;
+
   namespace contact
   {
     /**
@@ -113,6 +111,10 @@ namespace ndda
        */
       void
       set_reduced_blocks(const std::vector<bool> &reduced);
+
+      /** Split detection among @p cells' processes (after initialize()). */
+      void
+      set_owned_cells(const OwnedCells *cells);
 
       /** Change the normal stiffness (automatic penalty). */
       void
@@ -297,14 +299,12 @@ namespace ndda
           &statistics &first_step &one_way &end_force;
       }
 
-      /** Forget the broad phase's neighbour list (its contents depend on
-       * when it was built): the next step builds it, as a resumed run. */
+      /** Forget the neighbour list: the next step builds it (a resume). */
       void
       forget_neighbours()
       {
         neighbours.clear();
       }
-
 
     private:
       /**
@@ -762,7 +762,8 @@ namespace ndda
       std::vector<unsigned int> candidate_start;
       std::vector<unsigned int> vertex_edge_start;
       /// Detection's broad phase, kept while the vertices move little.
-      NeighbourList neighbours;
+      NeighbourList     neighbours;
+      const OwnedCells *owned_cells = nullptr; ///< set_owned_cells()
       /// Mean boundary edge length of every block (m).
       std::vector<double>      block_edge_length;
       std::vector<ContactPair> contacts;

@@ -8,6 +8,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <cstddef>
+#include <cstring>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -125,7 +126,33 @@ namespace ndda
           const std::size_t                per_cell,
           const std::vector<unsigned int> &cells) const;
 
+    /**
+     * The vertices this process owns, by vertex index: those whose first
+     * cell (the lowest-numbered active cell at the vertex) is its own, so
+     * that every vertex of a cell has one owner. @p cell_vertices holds
+     * the vertices of every cell, @p per_cell of them, cell after cell
+     * (DofMap::cell_vertices); there are @p n_vertices vertices, and one
+     * that is no cell's vertex is no process's.
+     */
+    std::vector<bool>
+    owned_vertices(const std::vector<unsigned int> &cell_vertices,
+                   const unsigned int               per_cell,
+                   const unsigned int               n_vertices) const;
+
+    /**
+     * Every process's list @p mine, joined in process order, on every
+     * process. The values are sent as they are in memory: T must be
+     * trivially copyable. Collective.
+     */
+    template <typename T>
+    std::vector<T>
+    gather(const std::vector<T> &mine) const;
+
   private:
+    /** gather() on @p n_bytes bytes at @p mine. */
+    std::vector<char>
+    gather_bytes(const char *mine, const std::size_t n_bytes) const;
+
     /** share() on @p values, @p per_cell doubles per cell. */
     void
     share_doubles(double *values, const std::size_t per_cell) const;
@@ -184,6 +211,24 @@ namespace ndda
                       per_cell * (sizeof(T) / sizeof(double)),
                       cells);
       }
+  }
+
+
+  template <typename T>
+  std::vector<T>
+  OwnedCells::gather(const std::vector<T> &mine) const
+  {
+    static_assert(std::is_trivially_copyable_v<T>,
+                  "OwnedCells::gather() sends the bytes of the values.");
+    if (!is_split())
+      return mine;
+    const std::vector<char> bytes =
+      gather_bytes(reinterpret_cast<const char *>(mine.data()),
+                   mine.size() * sizeof(T));
+    std::vector<T> all(bytes.size() / sizeof(T));
+    if (!all.empty())
+      std::memcpy(static_cast<void *>(all.data()), bytes.data(), bytes.size());
+    return all;
   }
 } // namespace ndda
 
