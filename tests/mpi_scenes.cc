@@ -139,9 +139,9 @@ namespace
       {
         simulator.do_time_step();
         const auto &contacts = simulator.get_contacts().get_statistics();
-        result.steps.push_back({contacts.n_closed,
-                                contacts.n_sliding,
-                                simulator.get_n_cracked_edges()});
+        result.steps.push_back({{contacts.n_closed,
+                                 contacts.n_sliding,
+                                 simulator.get_n_cracked_edges()}});
       }
     result.crack_edges  = simulator.get_mesh().get_block_mesh().crack_edges;
     result.displacement = simulator.get_displacement();
