@@ -17,7 +17,9 @@
 //  - each process's candidates are those of its own vertices;
 //  - each process's list holds fewer edges than the scene (its own and
 //    its ghosts), and on two processes the scene's contacts are shared
-//    between them.
+//    between them;
+//  - a block thrown across the scene while the others stand still is
+//    seen by every process it comes near (candidates equal detect()).
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
@@ -140,6 +142,51 @@ main(int argc, char **argv)
               << std::endl;
         }
     }
+  // A block thrown from one end of the scene to the other while the rest
+  // stands still: the processes it comes near must see it although none of
+  // their own or ghost edges moves.
+  {
+    contact::NeighbourList list;
+    list.set_owned_vertices(owned);
+    geometry::BlockMesh       moving = mesh;
+    const unsigned int        thrown = moving.block_names.size() - 1;
+    std::vector<unsigned int> nodes;
+    for (unsigned int c = 0; c < moving.triangles.size(); ++c)
+      if (moving.cell_block[c] == thrown)
+        nodes.insert(nodes.end(),
+                     moving.triangles[c].begin(),
+                     moving.triangles[c].end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    const double       threshold = 0.01;
+    const unsigned int n_steps   = 750;
+    unsigned int       n_same    = 0;
+    std::size_t        n_thrown  = 0;
+    for (unsigned int step = 0; step < n_steps; ++step)
+      {
+        for (const unsigned int v : nodes)
+          moving.vertices[v][0] -= 0.004;
+        std::vector<Candidate> all =
+          cells.gather(list.detect(moving.vertices, edges, threshold));
+        std::sort(all.begin(),
+                  all.end(),
+                  [](const Candidate &a, const Candidate &b) {
+                    return std::tie(a.vertex, a.edge) <
+                           std::tie(b.vertex, b.edge);
+                  });
+        const std::vector<Candidate> whole =
+          contact::detect(moving.vertices, edges, threshold);
+        n_same += same_candidates(all, whole);
+        for (const Candidate &c : whole)
+          n_thrown += (edges[c.edge].block == thrown) !=
+                      std::binary_search(nodes.begin(), nodes.end(), c.vertex);
+      }
+    n_same = dealii::Utilities::MPI::min(n_same, comm);
+    out << "thrown block: gathered candidates equal detect() in " << n_same
+        << " of " << n_steps << " steps" << std::endl;
+    check(n_same == n_steps, "the thrown block is seen");
+    check(n_thrown > 100, "the thrown block meets others");
+  }
   out << "OK" << std::endl;
   return 0;
 }

@@ -259,7 +259,7 @@ namespace ndda
 
 
 
-    std::vector<unsigned int>
+    std::size_t
     NeighbourList::add_owned_tests(const std::vector<Point<2>>     &vertices,
                                    const std::vector<BoundaryEdge> &edges,
                                    const double                     reach)
@@ -277,9 +277,8 @@ namespace ndda
       for (unsigned int e = 0; e < edges.size(); ++e)
         if (owned[edges[e].v0] || owned[edges[e].v1])
           own_edges.push_back(e);
-      std::vector<unsigned int> local;
       if (own_edges.empty())
-        return local;
+        return 0;
       BoundingBox<2> region = edge_box(vertices, edges[own_edges[0]]);
       for (const unsigned int e : own_edges)
         region.merge_with(edge_box(vertices, edges[e]));
@@ -302,10 +301,7 @@ namespace ndda
         {
           const BoundingBox<2> box = grown_box(vertices, edges[e], reach);
           if (touch(box, region))
-            {
-              local.push_back(e);
-              grown.emplace_back(box, e);
-            }
+            grown.emplace_back(box, e);
         }
       const auto tree = dealii::pack_rtree(grown);
 
@@ -332,7 +328,7 @@ namespace ndda
                     tests.emplace_back(v, j);
             }
         }
-      return local;
+      return grown.size();
     }
 
 
@@ -344,7 +340,6 @@ namespace ndda
     {
       reach = reach_in;
       tests.clear();
-      boundary_vertices.clear();
       if (owned.empty())
         {
           for_each_edge_pair(vertices,
@@ -356,29 +351,22 @@ namespace ndda
                                tests.emplace_back(edges[i].v0, j);
                                tests.emplace_back(edges[i].v1, j);
                              });
-          for (const BoundaryEdge &e : edges)
-            {
-              boundary_vertices.push_back(e.v0);
-              boundary_vertices.push_back(e.v1);
-            }
           local_edges = edges.size();
         }
       else
-        {
-          // The list stays complete while the own and the ghost edges move
-          // less than the skin allows: a pair it needs was within reach at
-          // the build, so its other edge was a ghost then.
-          const std::vector<unsigned int> local =
-            add_owned_tests(vertices, edges, reach);
-          for (const unsigned int e : local)
-            {
-              boundary_vertices.push_back(edges[e].v0);
-              boundary_vertices.push_back(edges[e].v1);
-            }
-          local_edges = local.size();
-        }
+        local_edges = add_owned_tests(vertices, edges, reach);
       std::sort(tests.begin(), tests.end());
       tests.erase(std::unique(tests.begin(), tests.end()), tests.end());
+
+      // Every boundary vertex is watched, also on several processes: an
+      // edge that is not a ghost now may move within reach (a block thrown
+      // from afar), and the list is then built again, as on one process.
+      boundary_vertices.clear();
+      for (const BoundaryEdge &e : edges)
+        {
+          boundary_vertices.push_back(e.v0);
+          boundary_vertices.push_back(e.v1);
+        }
       std::sort(boundary_vertices.begin(), boundary_vertices.end());
       boundary_vertices.erase(std::unique(boundary_vertices.begin(),
                                           boundary_vertices.end()),

@@ -153,7 +153,10 @@ namespace ndda
      * phase tests its own vertices only. The tests of all processes
      * together are exactly those of one process: a test (v, e) comes from
      * a pair of edges within reach, one of which has v as an end point;
-     * its owner holds that edge as its own and e as own or ghost.
+     * its owner holds that edge as its own and e as own or ghost. Every
+     * process watches the motion of every boundary vertex, as one process
+     * does, so that an edge that was no ghost at the build (a block thrown
+     * from afar) cannot come within reach unseen.
      */
     class NeighbourList
     {
@@ -225,8 +228,9 @@ namespace ndda
             const double                     reach);
 
       /** The tests of build() for the owned vertices only
-       * (set_owned_vertices()); returns the own and ghost edges. */
-      std::vector<unsigned int>
+       * (set_owned_vertices()); returns the number of own and ghost
+       * edges. */
+      std::size_t
       add_owned_tests(const std::vector<Point<2>>     &vertices,
                       const std::vector<BoundaryEdge> &edges,
                       const double                     reach);
