@@ -69,6 +69,17 @@ main(int argc, char **argv)
   const std::vector<bool> owned =
     cells.owned_vertices(cell_vertices, 3, mesh.vertices.size());
 
+  // Every process's candidates, joined and sorted by vertex, then edge.
+  const auto joined = [&cells](const std::vector<Candidate> &local) {
+    std::vector<Candidate> all = cells.gather(local);
+    std::sort(all.begin(),
+              all.end(),
+              [](const Candidate &a, const Candidate &b) {
+                return std::tie(a.vertex, a.edge) < std::tie(b.vertex, b.edge);
+              });
+    return all;
+  };
+
   // Every vertex has one owner.
   {
     std::vector<unsigned int> count(owned.begin(), owned.end());
@@ -101,16 +112,9 @@ main(int argc, char **argv)
             std::all_of(local.begin(), local.end(), [&](const Candidate &c) {
               return owned[c.vertex];
             });
-          std::vector<Candidate> all = cells.gather(local);
-          std::sort(all.begin(),
-                    all.end(),
-                    [](const Candidate &a, const Candidate &b) {
-                      return std::tie(a.vertex, a.edge) <
-                             std::tie(b.vertex, b.edge);
-                    });
           const std::vector<Candidate> whole =
             contact::detect(moving.vertices, edges, threshold);
-          n_same += same_candidates(all, whole);
+          n_same += same_candidates(joined(local), whole);
           n_candidates += whole.size();
           n_local += local.size();
           local_edges = std::max(local_edges, list.n_local_edges());
@@ -166,17 +170,10 @@ main(int argc, char **argv)
       {
         for (const unsigned int v : nodes)
           moving.vertices[v][0] -= 0.004;
-        std::vector<Candidate> all =
-          cells.gather(list.detect(moving.vertices, edges, threshold));
-        std::sort(all.begin(),
-                  all.end(),
-                  [](const Candidate &a, const Candidate &b) {
-                    return std::tie(a.vertex, a.edge) <
-                           std::tie(b.vertex, b.edge);
-                  });
         const std::vector<Candidate> whole =
           contact::detect(moving.vertices, edges, threshold);
-        n_same += same_candidates(all, whole);
+        n_same += same_candidates(
+          joined(list.detect(moving.vertices, edges, threshold)), whole);
         for (const Candidate &c : whole)
           n_thrown += (edges[c.edge].block == thrown) !=
                       std::binary_search(nodes.begin(), nodes.end(), c.vertex);
